@@ -1,0 +1,12 @@
+#pragma once
+// Where a step's time goes, accumulated over the run (seconds).
+namespace grainlab {
+
+struct Profile {
+  double neighbors = 0;  ///< neighbour-list rebuilds
+  double forces = 0;     ///< contact detection and contact law
+  double integrate = 0;  ///< drift and kick
+  long long rebuilds = 0;
+};
+
+}  // namespace grainlab

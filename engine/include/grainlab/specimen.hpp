@@ -1,0 +1,49 @@
+#pragma once
+// Specimen generation: the paper's assemblies of discs or elongated convex polygons, placed
+// at random without overlap inside a circle and enclosed by a ring of boundary particles.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "grainlab/particle.hpp"
+
+namespace grainlab {
+
+struct SpecimenRecipe {
+  enum class Shape { Disc, Elongated };
+  enum class Orientation { Random, Bedding };
+
+  Shape shape = Shape::Disc;
+  double discRadius = 0.002;                 ///< m, discs
+  /// Elongated polygons: long-axis lengths L (m) and their fractions by count.
+  std::vector<double> longAxes{0.0045, 0.0050, 0.0070};
+  std::vector<double> countFractions;        ///< empty: chosen to meet the paper's grading
+  double aspectRatio = 1.5;                  ///< long / short axis of the circumscribing ellipse
+  int vertices = 6;                          ///< 3..8
+  Orientation orientation = Orientation::Random;
+  double beddingAngle = 0;                   ///< rad, long axes at this angle (Bedding)
+  double specimenDiameter = 0.160;           ///< m, the consolidated specimen's target size
+  double targetVoidRatio = 0.27;             ///< sets the particle count for that diameter
+  std::optional<int> particleCount;          ///< overrides the count derived above
+  double boundaryRadius = 0;                 ///< m, ring particle radius; 0 = automatic
+};
+
+struct Specimen {
+  /// Specimen particles first, then the boundary ring (Motion::Kinematic, boundary = true).
+  std::vector<ParticleSpec> particles;
+  int specimenCount = 0;                     ///< particles that are not boundary
+  double initialRingRadius = 0;              ///< m, radius of the ring of boundary centres
+};
+
+/// Deterministic for a given recipe and seed.
+Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed);
+
+/// Parses the scene's "assembly" object; errors name the field under `path` (e.g.
+/// "assembly.vertices") through SceneError. Unknown keys are errors.
+SpecimenRecipe parseSpecimenRecipe(const nlohmann::json& assembly, const std::string& path);
+nlohmann::json specimenRecipeToJson(const SpecimenRecipe& recipe);
+
+}  // namespace grainlab

@@ -1,0 +1,136 @@
+#pragma once
+// The DEM world: particle state in contiguous arrays, a Verlet neighbour list, contact forces
+// from a pluggable contact law, and explicit leapfrog integration in double precision.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "grainlab/contact.hpp"
+#include "grainlab/material.hpp"
+#include "grainlab/math.hpp"
+#include "grainlab/particle.hpp"
+#include "grainlab/profile.hpp"
+#include "grainlab/shape.hpp"
+#include "grainlab/wall.hpp"
+
+namespace grainlab {
+
+class NeighborList;
+class PolygonCollider;
+
+struct WorldSettings {
+  /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
+  /// in the neighbour list, which is rebuilt when a particle has moved half of it.
+  double skinFraction = 0.3;
+  /// Worker threads for the force loop (1 = serial). Results do not depend on it.
+  int threads = 1;
+};
+
+class World {
+ public:
+  explicit World(const Material& material, WorldSettings settings = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds a particle; returns its index (indices are dense and stable, in creation order).
+  /// Throws std::invalid_argument for a malformed shape.
+  int addParticle(const ParticleSpec& spec);
+  int addWall(const Wall& wall);
+
+  void setGravity(const Vec2& g) { gravity_ = g; }
+  /// Friction may change between stages (the paper compacts with μ = 0).
+  void setFriction(double mu);
+  const Material& material() const { return material_; }
+
+  /// Timestep in s. Until set, it is timestepSafety × criticalTimestep().
+  void setTimestep(double dt) { timestep_ = dt; }
+  double timestep() const;
+  void setTimestepSafety(double safety) { timestepSafety_ = safety; }
+  /// 2·√(m*/k) for the stiffest, lightest contact: m* = m/2 for the lightest particle and
+  /// k = max(k_n, k_t·(1 + m R²/I)), the tangential spring seen through the particle's
+  /// rotational inertia at its bounding radius R. Explicit integration is unstable above it.
+  double criticalTimestep() const;
+
+  /// Prescribed motion of a kinematic particle (ignored for others).
+  void setKinematicVelocity(int i, const Vec2& v, double spin = 0);
+
+  /// Advances one timestep: drift, neighbour update, forces, kick.
+  void step();
+  /// Throws SimulationError if any state is non-finite or an overlap has run away (beyond
+  /// half of the smaller particle's size), naming the particle and the likely cause.
+  void checkHealth() const;
+
+  // ---- const views (for analysis and output; never a way to change the physics) ----
+  int size() const { return static_cast<int>(position_.size()); }
+  std::int64_t stepCount() const { return steps_; }
+  double time() const { return time_; }
+  std::span<const Vec2> positions() const { return position_; }
+  std::span<const double> angles() const { return angle_; }
+  std::span<const Vec2> velocities() const { return velocity_; }
+  std::span<const double> spins() const { return spin_; }
+  std::span<const Vec2> forces() const { return force_; }   ///< contact + body forces of the last step
+  std::span<const double> torques() const { return torque_; }
+  std::span<const double> masses() const { return mass_; }
+  std::span<const double> inertias() const { return inertia_; }
+  std::span<const double> boundingRadii() const { return boundingRadius_; }
+  std::span<const ShapeKind> shapes() const { return shape_; }
+  std::span<const Motion> motions() const { return motion_; }
+  std::span<const unsigned char> boundaryFlags() const { return boundary_; }
+  std::span<const Wall> walls() const { return walls_; }
+  /// The body-frame polygon of particle i (which must be a polygon).
+  const Polygon& polygon(int i) const { return polygons_[static_cast<size_t>(shapeIndex_[i])]; }
+  /// Solid area of particle i, m².
+  double area(int i) const;
+  bool hasPolygons() const { return !polygons_.empty(); }
+  /// World-frame vertices of polygon particle i.
+  void worldVertices(int i, std::vector<Vec2>& out) const;
+
+  /// The touching contacts as of the last force computation, in a stable order.
+  void contacts(std::vector<ContactRecord>& out) const;
+  /// Σ ½ m v² + ½ I ω² over dynamic particles, J per metre.
+  double kineticEnergy() const;
+  /// Energy stored in the contact springs, J per metre.
+  double elasticEnergy() const;
+  /// Σ m g·x: the gravitational potential energy relative to the origin, J per metre.
+  double potentialEnergy() const;
+
+  const Profile& profile() const { return profile_; }
+
+ private:
+  void prepare();
+  void drift(double dt);
+  void computeForces();
+  void kick(double dt);
+  template <class Law, bool kDiscsOnly>
+  void pairForces(const Law& law);
+
+  Material material_;
+  WorldSettings settings_;
+  Vec2 gravity_ = Vec2::Zero();
+  double timestep_ = 0;
+  double timestepSafety_ = 0.2;
+  std::int64_t steps_ = 0;
+  double time_ = 0;
+  bool prepared_ = false;
+
+  // Hot state, one entry per particle.
+  std::vector<Vec2> position_, velocity_, force_;
+  std::vector<double> angle_, spin_, torque_;
+  std::vector<double> invMass_, invInertia_;
+  // Cold data.
+  std::vector<double> mass_, inertia_, boundingRadius_;
+  std::vector<ShapeKind> shape_;
+  std::vector<Motion> motion_;
+  std::vector<unsigned char> boundary_;
+  std::vector<int> shapeIndex_;          // index into polygons_ or -1 for discs
+  std::vector<Polygon> polygons_;
+  std::vector<Wall> walls_;
+
+  std::unique_ptr<NeighborList> neighbors_;
+  std::unique_ptr<PolygonCollider> polygonCollider_;
+  Profile profile_;
+};
+
+}  // namespace grainlab
