@@ -23,8 +23,6 @@ struct WorldSettings {
   /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
   /// in the neighbour list, which is rebuilt when a particle has moved half of it.
   double skinFraction = 0.3;
-  /// Worker threads for the force loop (1 = serial). Results do not depend on it.
-  int threads = 1;
 };
 
 class World {
@@ -103,6 +101,8 @@ class World {
   void drift(double dt);
   void computeForces();
   void kick(double dt);
+  void assignDamping();
+  void applyLocalDamping();
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
 
@@ -114,6 +114,7 @@ class World {
   std::int64_t steps_ = 0;
   double time_ = 0;
   bool prepared_ = false;
+  double skin_ = 0;  // m
 
   // Hot state, one entry per particle.
   std::vector<Vec2> position_, velocity_, force_;

@@ -1,0 +1,78 @@
+#include "bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+
+#include "grainlab/bench_scenes.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab {
+namespace {
+
+struct Result {
+  std::string name;
+  int particles = 0;
+  std::vector<double> rates;  // particle-steps per second, one per repeat
+};
+
+
+Result measure(const Scene& scene, int steps, int repeats) {
+  World world(scene.material);
+  for (const ParticleSpec& p : scene.particles) world.addParticle(p);
+  for (const Wall& w : scene.walls) world.addWall(w);
+  world.setGravity(scene.gravity);
+  // Settle first (not timed): the pile is dense, with a realistic number of contacts.
+  const int settleSteps = static_cast<int>(scene.stages.front().duration / world.timestep());
+  for (int k = 0; k < settleSteps; ++k) world.step();
+  world.checkHealth();
+  Result r{scene.name, world.size(), {}};
+  for (int rep = 0; rep < repeats; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int k = 0; k < steps; ++k) world.step();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.rates.push_back(world.size() * static_cast<double>(steps) / s);
+  }
+  world.checkHealth();
+  return r;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int benchCommand(const std::vector<std::string>& args) {
+  int steps = 2000, repeats = 5;
+  for (size_t k = 0; k < args.size(); ++k) {
+    if (args[k] == "--steps" && k + 1 < args.size()) steps = std::stoi(args[++k]);
+    else if (args[k] == "--repeats" && k + 1 < args.size()) repeats = std::stoi(args[++k]);
+    else {
+      std::cerr << "grainlab bench: unexpected argument " << args[k] << "\n";
+      return 2;
+    }
+  }
+  const std::vector<Scene> scenes{pileScene(50, 50, false), pileScene(50, 50, true)};
+  std::vector<Result> results;
+  for (const Scene& scene : scenes) {
+    std::cerr << "bench: " << scene.name << " settling, then " << repeats << " x " << steps << " steps\n";
+    results.push_back(measure(scene, steps, repeats));
+  }
+  std::cout << std::left << std::setw(16) << "scene" << std::setw(11) << "particles" << "median particle-steps/s"
+            << "   (min .. max)\n";
+  for (const Result& r : results) {
+    std::cout << std::setw(16) << r.name << std::setw(11) << r.particles << std::setprecision(4) << median(r.rates) / 1e6
+              << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
+              << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
+  }
+  if (results.size() == 2) {
+    std::cout << "polygons / discs speed ratio: " << median(results[1].rates) / median(results[0].rates) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace grainlab

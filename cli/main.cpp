@@ -1,0 +1,115 @@
+// build/grainlab: the command line of contracts.md.
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/output_writer.hpp"
+#include "grainlab/presets.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/scene.hpp"
+#include "bench_command.hpp"
+#ifdef GRAINLAB_HAS_SERVER
+#include "grainlab/server/serve.hpp"
+#endif
+
+namespace {
+
+int usage(std::ostream& out, int code) {
+  out << "usage: grainlab <command> [options]\n"
+         "commands:\n"
+         "  run SCENE.json --out DIR     run a scene headless (progress on stderr)\n"
+         "  run --preset NAME --out DIR  run a preset\n"
+         "  presets                      list the presets\n"
+         "  preset NAME                  print a preset as scene JSON\n"
+         "  bench [--steps N]            speed on settled piles of discs and polygons\n"
+#ifdef GRAINLAB_HAS_SERVER
+         "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
+         "                               the HTTP/WebSocket server and dashboard\n"
+#endif
+         "  help                         this text\n";
+  return code;
+}
+
+int runCommand(const std::vector<std::string>& args) {
+  std::string scenePath, preset, out;
+  for (size_t k = 0; k < args.size(); ++k) {
+    if (args[k] == "--out" && k + 1 < args.size()) out = args[++k];
+    else if (args[k] == "--preset" && k + 1 < args.size()) preset = args[++k];
+    else if (!args[k].empty() && args[k][0] != '-' && scenePath.empty()) scenePath = args[k];
+    else {
+      std::cerr << "grainlab run: unexpected argument " << args[k] << "\n";
+      return usage(std::cerr, 2);
+    }
+  }
+  if (out.empty() || scenePath.empty() == preset.empty()) {
+    std::cerr << "grainlab run: give a SCENE.json or --preset NAME, and --out DIR\n";
+    return 2;
+  }
+  grainlab::Scene scene;
+  try {
+    // The whole scene is validated before anything is written.
+    scene = preset.empty() ? grainlab::loadSceneFile(scenePath) : grainlab::parseScene(grainlab::presetScene(preset));
+  } catch (const grainlab::SceneError& e) {
+    std::cerr << "error: " << e.field() << ": " << e.reason() << "\n";
+    return 2;
+  }
+  grainlab::OutputWriter writer(out, &std::cerr);
+  const grainlab::RunSummary summary = grainlab::runScene(scene, writer);
+  if (summary.status == "completed") return 0;
+  std::cerr << "error: run " << summary.status << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
+  return summary.status == "cancelled" ? 3 : 1;
+}
+
+#ifdef GRAINLAB_HAS_SERVER
+int serveCommand(const std::vector<std::string>& args) {
+  grainlab::server::ServeOptions options;
+  for (size_t k = 0; k < args.size(); ++k) {
+    const bool hasValue = k + 1 < args.size();
+    if (args[k] == "--host" && hasValue) options.host = args[++k];
+    else if (args[k] == "--port" && hasValue) options.port = static_cast<unsigned short>(std::stoi(args[++k]));
+    else if (args[k] == "--db" && hasValue) options.db = args[++k];
+    else if (args[k] == "--web" && hasValue) options.webRoot = args[++k];
+    else {
+      std::cerr << "grainlab serve: unexpected argument " << args[k] << "\n";
+      return usage(std::cerr, 2);
+    }
+  }
+  return grainlab::server::serve(options);
+}
+#endif
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage(std::cerr, 2);
+  const std::string command = argv[1];
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  try {
+    if (command == "run") return runCommand(args);
+    if (command == "presets") {
+      for (const std::string& name : grainlab::presetNames()) std::cout << name << "\n";
+      return 0;
+    }
+    if (command == "preset") {
+      if (args.size() != 1) return usage(std::cerr, 2);
+      std::cout << grainlab::presetScene(args[0]).dump(2) << "\n";
+      return 0;
+    }
+    if (command == "bench") return grainlab::benchCommand(args);
+#ifdef GRAINLAB_HAS_SERVER
+    if (command == "serve") return serveCommand(args);
+#endif
+    if (command == "help" || command == "--help" || command == "-h") return usage(std::cout, 0);
+  } catch (const grainlab::SceneError& e) {
+    std::cerr << "error: " << e.field() << ": " << e.reason() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "grainlab: unknown command " << command << "\n";
+  return usage(std::cerr, 2);
+}

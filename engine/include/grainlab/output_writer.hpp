@@ -1,0 +1,33 @@
+#pragma once
+// Writes a run's output directory (contracts.md): series.csv as the run goes, then
+// particles_final.csv, contacts_final.csv and summary.json at the end. Each final file is
+// written to a temporary name and renamed, so a reader never sees half a file.
+#include <fstream>
+#include <string>
+
+#include "grainlab/run.hpp"
+
+namespace grainlab {
+
+class OutputWriter : public RunObserver {
+ public:
+  /// Creates `directory` if needed. `progress` (may be null) receives a progress line now and then.
+  OutputWriter(std::string directory, std::ostream* progress);
+  void onStart(const Scene&, const World&) override;
+  void onSample(const Sample&, const World&) override;
+  void onProgress(double fraction, std::string_view stage, const World&) override;
+  void onFinish(const RunSummary&, const World&) override;
+
+ private:
+  std::string dir_;
+  std::ostream* progress_;
+  std::ofstream series_;
+  int lastPercent_ = -1;
+};
+
+/// The CSV text of one series row (empty cells for values not measured).
+std::string formatSeriesRow(const Sample& sample);
+/// The header line of series.csv.
+std::string seriesHeader();
+
+}  // namespace grainlab

@@ -1,0 +1,115 @@
+#include "grainlab/output_writer.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "grainlab/world.hpp"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+// Writes `text` to path via a temporary file and a rename: readers see all or nothing.
+void writeAtomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+}  // namespace
+
+OutputWriter::OutputWriter(std::string directory, std::ostream* progress)
+    : dir_(std::move(directory)), progress_(progress) {}
+
+void OutputWriter::onStart(const Scene&, const World&) {
+  fs::create_directories(dir_);
+  series_.open(fs::path(dir_) / "series.csv", std::ios::binary | std::ios::trunc);
+  if (!series_) throw std::runtime_error("cannot write " + dir_ + "/series.csv");
+  series_ << seriesHeader() << '\n';
+}
+
+void OutputWriter::onSample(const Sample& sample, const World&) {
+  series_ << formatSeriesRow(sample) << '\n';
+  series_.flush();  // a sample is rare; a reader (or a crash) sees every row so far
+}
+
+void OutputWriter::onProgress(double fraction, std::string_view stage, const World& world) {
+  if (!progress_) return;
+  const int percent = static_cast<int>(std::floor(fraction * 100));
+  if (percent == lastPercent_) return;
+  lastPercent_ = percent;
+  *progress_ << "[" << percent << "%] " << stage << "  step " << world.stepCount() << "  t = " << world.time()
+             << " s\n";
+  progress_->flush();
+}
+
+void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
+  series_.close();
+  const fs::path dir(dir_);
+  const auto x = world.positions();
+  const auto v = world.velocities();
+  std::string particles = "id,shape,x,y,angle,vx,vy,spin,radius,boundary\n";
+  for (int k = 0; k < world.size(); ++k) {
+    particles += std::to_string(k) + (world.shapes()[k] == ShapeKind::Disc ? ",disc," : ",polygon,") +
+                 num(x[k].x()) + "," + num(x[k].y()) + "," + num(world.angles()[k]) + "," + num(v[k].x()) + "," +
+                 num(v[k].y()) + "," + num(world.spins()[k]) + "," + num(world.boundingRadii()[k]) + "," +
+                 (world.boundaryFlags()[k] ? "1" : "0") + "\n";
+  }
+  writeAtomically(dir / "particles_final.csv", particles);
+
+  std::vector<ContactRecord> contacts;
+  world.contacts(contacts);
+  std::string text = "i,j,px,py,nx,ny,fn,ft,lix,liy,ljx,ljy\n";
+  for (const ContactRecord& c : contacts) {
+    const Vec2 li = c.point - x[c.i];
+    text += std::to_string(c.i) + "," + std::to_string(c.j) + "," + num(c.point.x()) + "," + num(c.point.y()) + "," +
+            num(c.normal.x()) + "," + num(c.normal.y()) + "," + num(c.fn) + "," + num(c.ft) + "," + num(li.x()) + "," +
+            num(li.y()) + ",";
+    if (!c.isWall()) {
+      const Vec2 lj = c.point - x[c.j];
+      text += num(lj.x()) + "," + num(lj.y());
+    } else {
+      text += ",";  // a wall has no centroid
+    }
+    text += "\n";
+  }
+  writeAtomically(dir / "contacts_final.csv", text);
+
+  nlohmann::json s;
+  s["status"] = summary.status;
+  if (!summary.error.empty()) s["error"] = summary.error;
+  s["wall_seconds"] = summary.wallSeconds;
+  s["steps"] = summary.steps;
+  s["particles"] = summary.particles;
+  s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;
+  if (summary.voidRatioAfterConsolidation >= 0) s["void_ratio_after_consolidation"] = summary.voidRatioAfterConsolidation;
+  s["timestep"] = world.timestep();
+  s["critical_timestep"] = world.criticalTimestep();
+  s["particle_steps_per_second"] =
+      summary.wallSeconds > 0 ? summary.particles * static_cast<double>(summary.steps) / summary.wallSeconds : 0.0;
+  const Profile& p = world.profile();
+  s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
+                          {"neighbor_rebuilds", p.rebuilds}};
+  writeAtomically(dir / "summary.json", s.dump(2) + "\n");
+  if (progress_) {
+    *progress_ << summary.status << " in " << summary.wallSeconds << " s, " << summary.steps << " steps"
+               << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
+  }
+}
+
+}  // namespace grainlab

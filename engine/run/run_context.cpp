@@ -1,0 +1,71 @@
+#include "run_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "grainlab/membrane.hpp"
+#include "grainlab/specimen.hpp"
+#include "grainlab/stages.hpp"
+
+namespace grainlab {
+
+RunContext::RunContext(const Scene& scene) : scene_(scene) {
+  world_ = std::make_unique<World>(scene.material);
+  for (const ParticleSpec& p : scene.particles) world_->addParticle(p);
+  if (scene.assembly) {
+    const Specimen specimen = generateSpecimen(*scene.assembly, scene.seed);
+    const bool membrane = scene.boundary.type == BoundarySpec::Type::Membrane;
+    for (const ParticleSpec& p : specimen.particles) {
+      if (p.boundary && !membrane) continue;  // no ring asked for
+      world_->addParticle(p);
+    }
+  }
+  for (const Wall& w : scene.walls) world_->addWall(w);
+  world_->setGravity(scene.gravity);
+  world_->setTimestepSafety(scene.solver.timestepSafety);
+  if (scene.solver.timestep > 0) world_->setTimestep(scene.solver.timestep);
+  if (scene.boundary.type == BoundarySpec::Type::Membrane) membrane_ = std::make_unique<Membrane>(*world_);
+  sampler_ = std::make_unique<Sampler>(scene.output, *world_, membrane_.get());
+}
+
+RunContext::~RunContext() = default;
+
+double RunContext::totalWork() const {
+  double work = 0;
+  for (const StageSpec& s : scene_.stages) work += s.type == StageSpec::Type::Biaxial ? 4.0 : 1.0;
+  return work;
+}
+
+Stage& RunContext::beginStage(size_t index) {
+  stageIndex_ = index;
+  const StageSpec& spec = scene_.stages[index];
+  world_->setFriction(spec.friction.value_or(scene_.material.friction));
+  if (spec.type == StageSpec::Type::Isotropic || spec.type == StageSpec::Type::Biaxial) {
+    sampler_->resetStrainReference();
+  }
+  stage_ = makeStage(spec, scene_.output, *world_, membrane_.get());
+  nextSample_ = stage_->sampleCoordinate() + stage_->sampleSpacing();
+  return *stage_;
+}
+
+void RunContext::endStage() {
+  if (scene_.stages[stageIndex_].type == StageSpec::Type::Isotropic) {
+    voidRatioAfterConsolidation_ = sampler_->lastVoidRatio();
+  }
+  if (membrane_) membrane_->setStrainRates(0, 0);
+}
+
+bool RunContext::sampleDue() const { return stage_->sampleCoordinate() >= nextSample_; }
+
+void RunContext::sample(RunObserver& observer) {
+  if (world_->stepCount() == lastSampleStep_) return;  // a stage's end may coincide with a sample
+  lastSampleStep_ = world_->stepCount();
+  world_->checkHealth();  // a diverged state never reaches the results
+  const double rate = membrane_ ? std::max(std::abs(membrane_->rate11()), std::abs(membrane_->rate22())) : 0.0;
+  const Sample s = sampler_->measure(static_cast<int>(stageIndex_), stage_->name(), rate);
+  observer.onSample(s, *world_);
+  const double spacing = stage_->sampleSpacing();
+  while (nextSample_ <= stage_->sampleCoordinate()) nextSample_ += spacing;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,45 @@
+#pragma once
+// Everything one run holds: the world built from the scene, its stages, and the sampler
+// that turns the world's state into series rows.
+#include <memory>
+#include <vector>
+
+#include "grainlab/contact.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/scene.hpp"
+#include "grainlab/stage.hpp"
+#include "grainlab/world.hpp"
+#include "sampler.hpp"
+
+namespace grainlab {
+
+class Membrane;
+
+class RunContext {
+ public:
+  /// Builds the world; throws SceneError or std::exception if the scene cannot be built.
+  explicit RunContext(const Scene& scene);
+  ~RunContext();
+
+  World& world() { return *world_; }
+  double totalWork() const;
+  Stage& beginStage(size_t index);
+  void endStage();
+  bool sampleDue() const;
+  void sample(RunObserver& observer);
+  double peakPhiMobDeg() const { return sampler_->peakPhiMobDeg(); }
+  double voidRatioAfterConsolidation() const { return voidRatioAfterConsolidation_; }
+
+ private:
+  const Scene& scene_;
+  std::unique_ptr<World> world_;
+  std::unique_ptr<Membrane> membrane_;
+  std::unique_ptr<Sampler> sampler_;
+  std::unique_ptr<Stage> stage_;
+  size_t stageIndex_ = 0;
+  double nextSample_ = 0;
+  std::int64_t lastSampleStep_ = -1;
+  double voidRatioAfterConsolidation_ = -1;
+};
+
+}  // namespace grainlab

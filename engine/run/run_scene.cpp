@@ -1,0 +1,75 @@
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/world.hpp"
+#include "run_context.hpp"
+
+namespace grainlab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Progress is reported, and cancellation polled, this often (steps).
+constexpr int kProgressEvery = 200;
+// Health (finite state, no runaway overlap) is checked this often (steps), and at every sample.
+constexpr int kHealthEvery = 1000;
+
+}  // namespace
+
+RunSummary runScene(const Scene& scene, RunObserver& observer) {
+  const auto start = Clock::now();
+  RunSummary summary;
+  std::unique_ptr<RunContext> context;
+  try {
+    context = std::make_unique<RunContext>(scene);
+  } catch (const std::exception& e) {
+    summary.status = "failed";
+    summary.error = e.what();
+    return summary;
+  }
+  World& world = context->world();
+  summary.particles = world.size();
+  observer.onStart(scene, world);
+  try {
+    const double totalWork = context->totalWork();
+    double workDone = 0;
+    for (size_t s = 0; s < scene.stages.size(); ++s) {
+      Stage& stage = context->beginStage(s);
+      context->sample(observer);  // the state the stage starts from
+      while (!stage.finished()) {
+        stage.beforeStep();
+        world.step();
+        stage.afterStep();
+        const std::int64_t step = world.stepCount();
+        if (step % kHealthEvery == 0) world.checkHealth();
+        if (context->sampleDue()) context->sample(observer);
+        if (step % kProgressEvery == 0) {
+          observer.onProgress((workDone + stage.progress() * stage.work()) / totalWork, stage.name(), world);
+          if (observer.cancelRequested()) {
+            summary.status = "cancelled";
+            break;
+          }
+        }
+      }
+      if (summary.status == "cancelled") break;
+      context->sample(observer);  // the state the stage ends in
+      workDone += stage.work();
+      context->endStage();
+    }
+  } catch (const std::exception& e) {
+    summary.status = "failed";
+    summary.error = e.what();
+  }
+  summary.steps = world.stepCount();
+  summary.peakPhiMobDeg = context->peakPhiMobDeg();
+  summary.voidRatioAfterConsolidation = context->voidRatioAfterConsolidation();
+  summary.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (summary.status == "completed") observer.onProgress(1.0, "done", world);
+  observer.onFinish(summary, world);
+  return summary;
+}
+
+}  // namespace grainlab

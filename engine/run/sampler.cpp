@@ -1,0 +1,152 @@
+#include "sampler.hpp"
+
+#include <cmath>
+
+#include "grainlab/analysis/fabric.hpp"
+#include "grainlab/analysis/stress_direction.hpp"
+#include "grainlab/membrane.hpp"
+#include "grainlab/stress.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab {
+namespace {
+
+const double kMissing = std::nan("");
+
+size_t column(const char* name) {
+  const auto& columns = seriesColumns();
+  for (size_t k = 0; k < columns.size(); ++k) {
+    if (columns[k] == name) return k;
+  }
+  throw std::logic_error(std::string("no series column ") + name);
+}
+
+}  // namespace
+
+Sampler::Sampler(const OutputSpec& output, const World& world, const Membrane* membrane)
+    : output_(output), world_(world), membrane_(membrane) {
+  histograms_.bins = output.histogramBins;
+  if (membrane_) {
+    inside_ = membrane_->inside();
+  } else {
+    inside_.assign(static_cast<size_t>(world.size()), 1);
+    for (int k = 0; k < world.size(); ++k) inside_[k] = world.boundaryFlags()[k] ? 0 : 1;
+  }
+  double sum = 0;
+  int count = 0;
+  for (int k = 0; k < world.size(); ++k) {
+    if (!inside_[k]) continue;
+    sum += 2 * std::sqrt(world.area(k) / kPi);
+    ++count;
+  }
+  meanDiameter_ = count ? sum / count : 0;
+  resetStrainReference();
+}
+
+void Sampler::resetStrainReference() {
+  if (!membrane_) return;
+  stretch1Ref_ = membrane_->stretch1();
+  stretch2Ref_ = membrane_->stretch2();
+  areaRef_ = membrane_->enclosedArea();
+}
+
+Sample Sampler::measure(int stageIndex, const std::string& stageName, double strainRate) {
+  static const size_t cStep = column("step"), cTime = column("time"), cStage = column("stage"),
+                      cAxial = column("axial_strain"), cLateral = column("lateral_strain"),
+                      cVol = column("volumetric_strain"), c11 = column("sigma11"), c22 = column("sigma22"),
+                      c12 = column("sigma12"), c21 = column("sigma21"), cP = column("p"), cQ = column("q"),
+                      cPhi = column("phi_mob_deg"), cVoid = column("void_ratio"),
+                      cCoord = column("coordination"), cContacts = column("contacts"),
+                      cAc = column("a_c"), cThc = column("theta_c_deg"), cAn = column("a_n"),
+                      cThn = column("theta_n_deg"), cAt = column("a_t"), cTht = column("theta_t_deg"),
+                      cAw = column("a_w"), cAln = column("a_ln"), cThln = column("theta_ln_deg"),
+                      cAlt = column("a_lt"), cThlt = column("theta_lt_deg"),
+                      cTsMacro = column("theta_sigma_macro_deg"), cTsMicro = column("theta_sigma_micro_deg"),
+                      cTs10 = column("theta_sigma_eq10_deg"), cTs11 = column("theta_sigma_eq11_deg"),
+                      cOmMacro = column("omega_macro_deg"), cOmMicro = column("omega_micro_deg"),
+                      cKin = column("kinetic_energy"), cOm10 = column("omega_eq10_deg"),
+                      cOm11 = column("omega_eq11_deg"), cF0 = column("f0"), cL0 = column("l0"),
+                      cInertial = column("inertial_number"), cElastic = column("elastic_energy"),
+                      cArea = column("area");
+  Sample s;
+  s.step = world_.stepCount();
+  s.time = world_.time();
+  s.stage = stageName;
+  std::vector<double>& v = s.values;
+  v.assign(seriesColumns().size(), kMissing);
+  v[cStep] = static_cast<double>(s.step);
+  v[cTime] = s.time;
+  v[cStage] = stageIndex;
+  v[cKin] = world_.kineticEnergy();
+  v[cElastic] = world_.elasticEnergy();
+
+  world_.contacts(contacts_);
+  // Coordination: contact ends on specimen particles per specimen particle.
+  long long ends = 0, specimen = 0, contacts = 0;
+  for (const ContactRecord& c : contacts_) {
+    const bool a = inside_[c.i], b = !c.isWall() && inside_[c.j];
+    ends += a + b;
+    contacts += (a || b);
+  }
+  for (unsigned char f : inside_) specimen += f;
+  v[cContacts] = static_cast<double>(contacts);
+  if (specimen) v[cCoord] = static_cast<double>(ends) / specimen;
+
+  if (membrane_) {
+    const double area = membrane_->enclosedArea();
+    v[cArea] = area;
+    v[cAxial] = 1 - membrane_->stretch2() / stretch2Ref_;
+    v[cLateral] = 1 - membrane_->stretch1() / stretch1Ref_;
+    v[cVol] = 1 - area / areaRef_;
+    lastVoidRatio_ = (area - membrane_->solidArea()) / membrane_->solidArea();
+    v[cVoid] = lastVoidRatio_;
+    const StressTensor stress = contactStress(contacts_, world_.positions(), inside_, area);
+    v[c11] = stress.s11;
+    v[c22] = stress.s22;
+    v[c12] = stress.s12;
+    v[c21] = stress.s21;
+    v[cP] = stress.p();
+    v[cQ] = stress.q();
+    if (stress.p() > 0) {
+      const double phi = analysis::phiMobDeg(stress);
+      v[cPhi] = phi;
+      peakPhiMob_ = std::max(peakPhiMob_, phi);
+      // I = ε̇ d √(ρ/p): below ~1e-3 the shearing is quasi-static.
+      v[cInertial] = std::abs(strainRate) * meanDiameter_ * std::sqrt(world_.material().density / stress.p());
+    }
+    if (output_.fabric && contacts > 0) {
+      const analysis::FabricState f = analysis::measureFabric(contacts_, world_.positions(), inside_);
+      v[cAc] = f.a_c;
+      v[cThc] = f.theta_c_deg;
+      v[cAn] = f.a_n;
+      v[cThn] = f.theta_n_deg;
+      v[cAt] = f.a_t;
+      v[cTht] = f.theta_t_deg;
+      v[cAw] = f.a_w;
+      v[cAln] = f.a_ln;
+      v[cThln] = f.theta_ln_deg;
+      v[cAlt] = f.a_lt;
+      v[cThlt] = f.theta_lt_deg;
+      v[cF0] = f.f0;
+      v[cL0] = f.l0;
+      if (stress.p() > 0) {
+        const analysis::StressDirections d = analysis::stressDirections(stress, f);
+        v[cTsMacro] = d.theta_sigma_macro_deg;
+        v[cTsMicro] = d.theta_sigma_micro_deg;
+        v[cTs10] = d.theta_sigma_eq10_deg;
+        v[cTs11] = d.theta_sigma_eq11_deg;
+        v[cOmMacro] = d.omega_macro_deg;
+        v[cOmMicro] = d.omega_micro_deg;
+        v[cOm10] = d.omega_eq10_deg;
+        v[cOm11] = d.omega_eq11_deg;
+      }
+    }
+    if (output_.histograms && contacts > 0) {
+      analysis::measureHistograms(contacts_, world_.positions(), inside_, histograms_);
+      s.histograms = &histograms_;
+    }
+  }
+  return s;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,43 @@
+#pragma once
+// Turns the world's state into one series row: strains and stresses from the membrane,
+// packing measures, and (if the scene asks) the fabric and the principal stress directions.
+// It reads the world and never changes it.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grainlab/analysis/histogram.hpp"
+#include "grainlab/contact.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/scene.hpp"
+
+namespace grainlab {
+
+class World;
+class Membrane;
+
+class Sampler {
+ public:
+  Sampler(const OutputSpec& output, const World& world, const Membrane* membrane);
+
+  /// Strains are measured from the ring's state at the last call (the start of shearing).
+  void resetStrainReference();
+  /// The row for the world's current state; `stageIndex` and `stageName` label it.
+  Sample measure(int stageIndex, const std::string& stageName, double strainRate);
+  double peakPhiMobDeg() const { return peakPhiMob_; }
+  double lastVoidRatio() const { return lastVoidRatio_; }
+
+ private:
+  OutputSpec output_;
+  const World& world_;
+  const Membrane* membrane_;
+  std::vector<unsigned char> inside_;
+  std::vector<ContactRecord> contacts_;
+  analysis::PolarHistograms histograms_;
+  double stretch1Ref_ = 1, stretch2Ref_ = 1, areaRef_ = 0;
+  double meanDiameter_ = 0;  // m, of the specimen particles (equal-area discs)
+  double peakPhiMob_ = 0;
+  double lastVoidRatio_ = -1;
+};
+
+}  // namespace grainlab

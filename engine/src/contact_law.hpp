@@ -1,0 +1,72 @@
+#pragma once
+// Contact laws, composed from a normal model and a tangential model (as LAMMPS GRANULAR
+// composes its sub-models). Each model is a small value type with inline force functions;
+// the World instantiates its force loop once per combination, so a law costs no virtual
+// call per contact. To add a law (Hertz-Mindlin, rolling resistance): write its model here
+// with the same members, and add one case to World::computeForces' dispatch.
+#include <cmath>
+
+#include "grainlab/math.hpp"
+
+namespace grainlab {
+
+/// Relative motion at a contact point, seen from body i: vn = (v_j − v_i)·n (negative when
+/// approaching), vt = (v_j − v_i)·t.
+struct ContactMotion {
+  double overlap;  ///< m, > 0
+  double vn;       ///< m/s
+  double vt;       ///< m/s
+};
+
+/// Linear spring-dashpot: f_n = k_n δ − c_n v_n, never attractive.
+struct LinearSpringDashpot {
+  double stiffness;  ///< k_n, N/m
+  double force(const ContactMotion& c, double damping) const {
+    const double f = stiffness * c.overlap - damping * c.vn;
+    return f > 0 ? f : 0;
+  }
+  double energy(double overlap) const { return 0.5 * stiffness * overlap * overlap; }
+};
+
+/// Cundall-Strack: an incremental tangential spring kept while the contact persists,
+/// capped by Coulomb friction; when it slides the spring is reset to the cap.
+struct CundallStrack {
+  double stiffness;  ///< k_t, N/m
+  double friction;   ///< μ
+  static constexpr bool kKeepsHistory = true;
+  /// Returns f_t (the force on j along t) and updates the spring elongation `history`.
+  double force(double fn, const ContactMotion& c, double damping, double dt, double& history) const {
+    history += c.vt * dt;
+    double ft = -stiffness * history - damping * c.vt;
+    const double cap = friction * fn;
+    if (std::abs(ft) > cap) {
+      ft = std::copysign(cap, ft);
+      history = -(ft + damping * c.vt) / stiffness;  // spring + dashpot sit at the cap
+    }
+    return ft;
+  }
+  double energy(double history) const { return 0.5 * stiffness * history * history; }
+};
+
+/// No friction: no tangential force and no history to keep.
+struct Frictionless {
+  static constexpr bool kKeepsHistory = false;
+  double force(double, const ContactMotion&, double, double, double&) const { return 0; }
+  double energy(double) const { return 0; }
+};
+
+template <class Normal, class Tangential>
+struct ContactLaw {
+  Normal normal;
+  Tangential tangential;
+};
+
+/// Damping ratio ζ of a linear spring-dashpot whose binary collision has restitution e:
+/// ζ = −ln e / √(π² + ln² e); the coefficient for effective mass m* is 2ζ√(m* k).
+inline double dampingRatio(double restitution) {
+  if (restitution >= 1) return 0;
+  const double l = std::log(restitution);
+  return -l / std::sqrt(kPi * kPi + l * l);
+}
+
+}  // namespace grainlab

@@ -1,0 +1,71 @@
+#include "grainlab/membrane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace grainlab {
+
+Membrane::Membrane(World& world) : world_(world) {
+  const auto boundary = world.boundaryFlags();
+  const auto x = world.positions();
+  inside_.assign(boundary.begin(), boundary.end());
+  for (auto& flag : inside_) flag = flag ? 0 : 1;
+  for (int k = 0; k < world.size(); ++k) {
+    if (boundary[k]) {
+      ring_.push_back(k);
+      centre_ += x[k];
+      ringRadius_ += world.boundingRadii()[k];
+    } else {
+      solidArea_ += world.area(k);
+      ++specimenCount_;
+    }
+  }
+  if (ring_.size() < 3) throw std::invalid_argument("a membrane needs at least 3 boundary particles");
+  centre_ /= static_cast<double>(ring_.size());
+  ringRadius_ /= static_cast<double>(ring_.size());
+  // Angular order makes the ring a simple polygon for the area.
+  std::sort(ring_.begin(), ring_.end(), [&](int a, int b) {
+    return std::atan2(x[a].y() - centre_.y(), x[a].x() - centre_.x()) <
+           std::atan2(x[b].y() - centre_.y(), x[b].x() - centre_.x());
+  });
+}
+
+void Membrane::setStrainRates(double rate11, double rate22) {
+  rate11_ = rate11;
+  rate22_ = rate22;
+}
+
+void Membrane::applyVelocities() {
+  const auto x = world_.positions();
+  for (int k : ring_) {
+    const Vec2 d = x[k] - centre_;
+    world_.setKinematicVelocity(k, Vec2(-rate11_ * d.x(), -rate22_ * d.y()), 0.0);
+  }
+}
+
+void Membrane::advance(double dt) {
+  // Positions moved by x += v dt with v = −ε̇ (x − c): lengths scale by (1 − ε̇ dt) exactly.
+  stretch1_ *= 1.0 - rate11_ * dt;
+  stretch2_ *= 1.0 - rate22_ * dt;
+}
+
+double Membrane::enclosedArea() const {
+  const auto x = world_.positions();
+  double area2 = 0, perimeter = 0;
+  for (size_t k = 0; k < ring_.size(); ++k) {
+    const Vec2& a = x[ring_[k]];
+    const Vec2& b = x[ring_[(k + 1) % ring_.size()]];
+    area2 += cross(a - centre_, b - centre_);
+    perimeter += (b - a).norm();
+  }
+  const double r = ringRadius_;
+  return 0.5 * std::abs(area2) - perimeter * r + kPi * r * r;
+}
+
+StressTensor Membrane::measureStress(std::vector<ContactRecord>& contacts) const {
+  world_.contacts(contacts);
+  return contactStress(contacts, world_.positions(), inside_, enclosedArea());
+}
+
+}  // namespace grainlab

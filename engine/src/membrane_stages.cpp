@@ -1,0 +1,127 @@
+#include "membrane_stages.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "free_stage.hpp"
+#include "grainlab/stages.hpp"
+
+namespace grainlab {
+namespace {
+
+// The servo measures the stress this often: 1/20 of the steps keeps its cost near 5% of a
+// step while the boundary moves only ~1e-4 strain between measurements.
+constexpr int kMeasureEvery = 20;
+
+}  // namespace
+
+MembraneStage::MembraneStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane)
+    : spec_(spec), world_(world), membrane_(membrane), startTime_(world.time()),
+      sampleInterval_(output.sampleInterval > 0 ? output.sampleInterval : 0.005) {
+  stress_ = membrane_.measureStress(contacts_);
+  dtControl_ = kMeasureEvery * world_.timestep();
+}
+
+void MembraneStage::beforeStep() {
+  if (!started_) {  // the first control acts on the stress measured at construction
+    started_ = true;
+    control();
+  }
+  membrane_.applyVelocities();
+}
+
+void MembraneStage::afterStep() {
+  membrane_.advance(world_.timestep());
+  if (++stepsSinceMeasure_ >= kMeasureEvery) {
+    stepsSinceMeasure_ = 0;
+    stress_ = membrane_.measureStress(contacts_);
+    control();
+  }
+}
+
+StressServo MembraneStage::makeServo(double target, double maxRate) const {
+  // The packing's modulus is of the order of half the contact stiffness (2D, per metre);
+  // the servo settles in about five wave crossings of the specimen, slow enough not to
+  // ring, fast enough to follow the dilation of shearing.
+  const double modulus = 0.5 * world_.material().normalStiffness;
+  const double diameter = 2 * std::sqrt(membrane_.enclosedArea() / kPi);
+  const double crossing = diameter / std::sqrt(modulus / world_.material().density);
+  const double tau = 5 * crossing;
+  StressServo servo;
+  servo.target = target;
+  servo.maxRate = maxRate;
+  servo.kp = target / (modulus * tau);
+  servo.ki = servo.kp / (4 * tau);
+  return servo;
+}
+
+double CompactionStage::progress() const { return std::clamp(stress_.p() / spec_.pressure, 0.0, 1.0); }
+
+void CompactionStage::control() {
+  const double p = stress_.p();
+  if (p >= spec_.pressure) {
+    done_ = true;
+    membrane_.setStrainRates(0, 0);
+    return;
+  }
+  // Slow down as contacts start to carry load, so the stage ends near its small pressure.
+  const double rate = spec_.strainRate * std::max(0.05, 1.0 - p / spec_.pressure);
+  membrane_.setStrainRates(rate, rate);
+}
+
+ConsolidationStage::ConsolidationStage(const StageSpec& spec, const OutputSpec& output, World& world,
+                                       Membrane& membrane)
+    : MembraneStage(spec, output, world, membrane) {
+  servo11_ = makeServo(spec.pressure, spec.strainRate);
+  servo22_ = makeServo(spec.pressure, spec.strainRate);
+  windowStart_ = world.time();
+  windowArea_ = membrane.enclosedArea();
+}
+
+double ConsolidationStage::progress() const {
+  if (done_) return 1;
+  return 0.9 * std::clamp(stress_.p() / spec_.pressure, 0.0, 1.0);
+}
+
+void ConsolidationStage::control() {
+  if (done_) return;
+  membrane_.setStrainRates(servo11_.rate(stress_.s11, dtControl_), servo22_.rate(stress_.s22, dtControl_));
+  // "Until the volume stops changing": over each window of 20 servo time constants, the
+  // stresses are within 1% of the target and the area changed by less than 1e-5.
+  const double window = 200 * dtControl_;
+  if (world_.time() - windowStart_ >= window) {
+    const double area = membrane_.enclosedArea();
+    const bool onTarget = std::abs(stress_.s11 - spec_.pressure) < 0.01 * spec_.pressure &&
+                          std::abs(stress_.s22 - spec_.pressure) < 0.01 * spec_.pressure;
+    if (onTarget && std::abs(area - windowArea_) < 1e-5 * windowArea_) {
+      done_ = true;
+      membrane_.setStrainRates(0, 0);
+    }
+    windowStart_ = world_.time();
+    windowArea_ = area;
+  }
+}
+
+BiaxialStage::BiaxialStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane)
+    : MembraneStage(spec, output, world, membrane),
+      stretch2Start_(membrane.stretch2()),
+      sampleStrain_(output.sampleStrain) {
+  // The lateral servo may move as fast as dilation can demand: a few times the axial rate.
+  servo11_ = makeServo(spec.pressure, 4 * spec.strainRate);
+}
+
+void BiaxialStage::control() {
+  membrane_.setStrainRates(servo11_.rate(stress_.s11, dtControl_), spec_.strainRate);
+}
+
+std::unique_ptr<Stage> makeStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane* membrane) {
+  switch (spec.type) {
+    case StageSpec::Type::Free: return std::make_unique<FreeStage>(spec, output, world);
+    case StageSpec::Type::Compaction: return std::make_unique<CompactionStage>(spec, output, world, *membrane);
+    case StageSpec::Type::Isotropic: return std::make_unique<ConsolidationStage>(spec, output, world, *membrane);
+    case StageSpec::Type::Biaxial: return std::make_unique<BiaxialStage>(spec, output, world, *membrane);
+  }
+  return nullptr;
+}
+
+}  // namespace grainlab

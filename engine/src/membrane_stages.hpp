@@ -1,0 +1,91 @@
+#pragma once
+// The loading stages of the paper's biaxial test, all driven through the membrane ring:
+// compaction (stage 0), isotropic consolidation (stage 1), biaxial shearing (stage 2).
+#include <vector>
+
+#include "grainlab/membrane.hpp"
+#include "grainlab/scene.hpp"
+#include "grainlab/stage.hpp"
+#include "servo.hpp"
+
+namespace grainlab {
+
+/// Shared machinery: the stress is measured from the contacts every few steps (often
+/// enough for the servo, rarely enough to cost little), and the ring is moved.
+class MembraneStage : public Stage {
+ public:
+  MembraneStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
+  const std::string& name() const override { return spec_.name; }
+  void beforeStep() override;
+  void afterStep() override;
+  double sampleCoordinate() const override { return world_.time() - startTime_; }
+  double sampleSpacing() const override { return sampleInterval_; }
+  const StressTensor& stress() const { return stress_; }
+
+ protected:
+  /// Called after each stress measurement: choose the strain rates.
+  virtual void control() = 0;
+  bool timedOut() const { return spec_.maxTime > 0 && world_.time() - startTime_ >= spec_.maxTime; }
+  /// A servo whose response time is a few times the time a wave takes to cross the specimen.
+  StressServo makeServo(double target, double maxRate) const;
+
+  StageSpec spec_;
+  World& world_;
+  Membrane& membrane_;
+  StressTensor stress_;
+  double startTime_;
+  double sampleInterval_;
+  double dtControl_ = 0;  // s between stress measurements
+  int stepsSinceMeasure_ = 0;
+  bool started_ = false;
+  std::vector<ContactRecord> contacts_;
+};
+
+/// Shrinks the ring equally on both axes, frictionless by default, until p reaches a small
+/// pressure: the particles touch with almost no force.
+class CompactionStage : public MembraneStage {
+ public:
+  using MembraneStage::MembraneStage;
+  bool finished() const override { return done_ || timedOut(); }
+  double progress() const override;
+
+ private:
+  void control() override;
+  bool done_ = false;
+};
+
+/// Servo-controls σ11 and σ22 to the target pressure, until p is there and the volume has
+/// stopped changing.
+class ConsolidationStage : public MembraneStage {
+ public:
+  ConsolidationStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
+  bool finished() const override { return done_ || timedOut(); }
+  double progress() const override;
+
+ private:
+  void control() override;
+  StressServo servo11_, servo22_;
+  double windowStart_ = 0, windowArea_ = 0;
+  bool done_ = false;
+};
+
+/// Compresses axis 2 at the prescribed rate while a servo holds σ11, up to the target
+/// axial strain.
+class BiaxialStage : public MembraneStage {
+ public:
+  BiaxialStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
+  bool finished() const override { return axialStrain() >= spec_.targetAxialStrain || timedOut(); }
+  double progress() const override { return std::min(1.0, axialStrain() / spec_.targetAxialStrain); }
+  double sampleCoordinate() const override { return axialStrain(); }
+  double sampleSpacing() const override { return sampleStrain_; }
+  double work() const override { return 4.0; }
+
+ private:
+  double axialStrain() const { return 1.0 - membrane_.stretch2() / stretch2Start_; }
+  void control() override;
+  StressServo servo11_;
+  double stretch2Start_;
+  double sampleStrain_;
+};
+
+}  // namespace grainlab

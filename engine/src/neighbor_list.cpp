@@ -1,0 +1,111 @@
+#include "neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace grainlab {
+
+bool NeighborList::update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+                          std::span<const Motion> motions, std::span<const Wall> walls, double skin) {
+  if (valid_ && skin == skin_ && reference_.size() == positions.size()) {
+    const double limit2 = 0.25 * skin * skin;  // half the skin, squared
+    bool moved = false;
+    for (size_t k = 0; k < positions.size(); ++k) {
+      if ((positions[k] - reference_[k]).squaredNorm() > limit2) {
+        moved = true;
+        break;
+      }
+    }
+    if (!moved) return false;
+  }
+  build(positions, boundingRadii, motions, walls, skin);
+  return true;
+}
+
+void NeighborList::build(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+                         std::span<const Motion> motions, std::span<const Wall> walls, double skin) {
+  const int n = static_cast<int>(positions.size());
+  skin_ = skin;
+  reference_.assign(positions.begin(), positions.end());
+  previous_.swap(pairs_);
+  pairs_.clear();
+
+  // Cell grid over the particles' bounding box; a cell is as wide as the largest pair reach,
+  // so every candidate of a particle lies in its own or the eight surrounding cells.
+  double rmax = 0;
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (int k = 0; k < n; ++k) {
+    rmax = std::max(rmax, boundingRadii[k]);
+    lo = lo.cwiseMin(positions[k]);
+    hi = hi.cwiseMax(positions[k]);
+  }
+  const double cell = std::max(2 * rmax + skin, 1e-12);
+  const int nx = n ? std::max(1, static_cast<int>((hi.x() - lo.x()) / cell) + 1) : 1;
+  const int ny = n ? std::max(1, static_cast<int>((hi.y() - lo.y()) / cell) + 1) : 1;
+  auto cellOf = [&](const Vec2& x, int& cx, int& cy) {
+    cx = std::clamp(static_cast<int>((x.x() - lo.x()) / cell), 0, nx - 1);
+    cy = std::clamp(static_cast<int>((x.y() - lo.y()) / cell), 0, ny - 1);
+  };
+  // Counting sort of particles into cells keeps each cell's list in index order.
+  cellStart_.assign(static_cast<size_t>(nx) * ny + 1, 0);
+  cellItems_.resize(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    int cx, cy;
+    cellOf(positions[k], cx, cy);
+    ++cellStart_[static_cast<size_t>(cy) * nx + cx + 1];
+  }
+  for (size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+  {
+    std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (int k = 0; k < n; ++k) {
+      int cx, cy;
+      cellOf(positions[k], cx, cy);
+      cellItems_[static_cast<size_t>(fill[static_cast<size_t>(cy) * nx + cx]++)] = k;
+    }
+  }
+
+  for (int i = 0; i < n; ++i) {
+    const bool iMoves = motions[i] == Motion::Dynamic;
+    // Walls first (j < 0), in wall order: pairs stay sorted by (i, j).
+    if (iMoves) {
+      for (int w = static_cast<int>(walls.size()) - 1; w >= 0; --w) {
+        const double s = (positions[i] - walls[w].point).dot(walls[w].normal);
+        if (s < boundingRadii[i] + skin) pairs_.push_back({i, -1 - w});
+      }
+    }
+    candidates_.clear();
+    int cx, cy;
+    cellOf(positions[i], cx, cy);
+    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, ny - 1); ++y) {
+      for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, nx - 1); ++x) {
+        const size_t c = static_cast<size_t>(y) * nx + x;
+        for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+          const int j = cellItems_[static_cast<size_t>(k)];
+          if (j <= i) continue;
+          // Two particles that cannot be moved by forces need no contact.
+          if (!iMoves && motions[j] != Motion::Dynamic) continue;
+          const double reach = boundingRadii[i] + boundingRadii[j] + skin;
+          if ((positions[j] - positions[i]).squaredNorm() < reach * reach) candidates_.push_back(j);
+        }
+      }
+    }
+    std::sort(candidates_.begin(), candidates_.end());
+    for (int j : candidates_) pairs_.push_back({i, j});
+  }
+
+  // Carry contact history over: both lists are sorted by (i, j).
+  auto less = [](const PairState& a, const PairState& b) { return a.i < b.i || (a.i == b.i && a.j < b.j); };
+  size_t o = 0;
+  for (PairState& p : pairs_) {
+    while (o < previous_.size() && less(previous_[o], p)) ++o;
+    if (o < previous_.size() && previous_[o].i == p.i && previous_[o].j == p.j) {
+      p.history = previous_[o].history;
+      p.fn = previous_[o].fn;
+      p.ft = previous_[o].ft;
+      p.overlap = previous_[o].overlap;
+    }
+  }
+  valid_ = true;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,49 @@
+#pragma once
+// Verlet neighbour list built on a cell grid: every pair whose bounding circles come within
+// a skin of each other, plus every particle-wall pair within the skin. It is rebuilt only
+// when some particle has moved more than half the skin since the last build, and each
+// pair's contact history is carried over to the new list while the pair persists.
+#include <span>
+#include <vector>
+
+#include "grainlab/math.hpp"
+#include "grainlab/particle.hpp"
+#include "grainlab/wall.hpp"
+
+namespace grainlab {
+
+/// One candidate pair and the state its contact keeps (hot data: 64 bytes).
+struct PairState {
+  int i = 0;
+  int j = 0;                 ///< particle index, or -1 - wall index
+  double dampN = 0;          ///< normal viscous coefficient, N·s/m
+  double dampT = 0;          ///< tangential viscous coefficient, N·s/m
+  double history = 0;        ///< tangential spring elongation, m (0 when not touching)
+  double fn = 0, ft = 0;     ///< forces of the last step, N (0 when not touching)
+  double overlap = 0;        ///< m, of the last step (<= 0 when not touching)
+};
+
+class NeighborList {
+ public:
+  /// Rebuilds if needed; returns true if it did.
+  bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+              std::span<const Motion> motions, std::span<const Wall> walls, double skin);
+  /// Forces a rebuild at the next update (particles or walls were added).
+  void invalidate() { valid_ = false; }
+
+  std::vector<PairState>& pairs() { return pairs_; }
+  const std::vector<PairState>& pairs() const { return pairs_; }
+
+ private:
+  void build(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+             std::span<const Motion> motions, std::span<const Wall> walls, double skin);
+
+  bool valid_ = false;
+  double skin_ = 0;
+  std::vector<Vec2> reference_;      // positions at the last build
+  std::vector<PairState> pairs_;
+  std::vector<PairState> previous_;  // scratch for carrying history over
+  std::vector<int> cellStart_, cellItems_, candidates_;
+};
+
+}  // namespace grainlab

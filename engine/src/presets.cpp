@@ -1,0 +1,108 @@
+#include "grainlab/presets.hpp"
+
+#include "grainlab/errors.hpp"
+
+namespace grainlab {
+namespace {
+
+using nlohmann::json;
+
+// The paper's material: quartz-like density; k_n chosen so that the mean contact overlap at
+// p = 300 kPa is about 1e-3 of the particle size. For discs the mean normal force is
+// f ≈ 2π r p / (Z φ) ≈ 1.2 kN/m (r = 2 mm, Z ≈ 4, φ ≈ 0.8), so δ = 4 µm needs k_n ≈ 3e8 N/m;
+// k_t = k_n/2. Restitution 0.5 and a light local damping make consolidation settle without
+// affecting the quasi-static shearing, where the inertial number stays ~2e-4.
+json paperMaterial() {
+  return {{"density", 2650.0}, {"normal_stiffness", 3e8}, {"tangential_stiffness", 1.5e8},
+          {"friction", 0.5}, {"restitution", 0.5}, {"local_damping", 0.1}};
+}
+
+json paperStages(double shearRate) {
+  return json::array({
+      {{"type", "compaction"}, {"name", "compaction"}, {"pressure", 3e3}, {"strain_rate", 2.0}, {"friction", 0.0}},
+      {{"type", "isotropic"}, {"name", "consolidation"}, {"pressure", 300e3}, {"strain_rate", 0.5}},
+      {{"type", "biaxial"}, {"name", "shearing"}, {"pressure", 300e3}, {"strain_rate", shearRate},
+       {"target_axial_strain", 0.2}},
+  });
+}
+
+json paperAssembly(const std::string& kind, bool quick) {
+  json a;
+  if (kind == "circular") {
+    a = {{"shape", "disc"}, {"disc_radius", 0.002}};
+  } else {
+    a = {{"shape", "elongated"}, {"aspect_ratio", 1.5}, {"vertices", 6}};
+    if (kind == "random") {
+      a["orientation"] = "random";
+    } else {
+      a["orientation"] = "bedding";
+      a["bedding_angle_deg"] = std::stod(kind);
+    }
+  }
+  a["specimen_diameter"] = quick ? 0.06 : 0.160;
+  return a;
+}
+
+json paperScene(const std::string& name, const std::string& kind, bool quick) {
+  return {{"name", name},
+          {"seed", 1},
+          {"material", paperMaterial()},
+          {"assembly", paperAssembly(kind, quick)},
+          {"boundary", {{"type", "membrane"}}},
+          {"stages", paperStages(quick ? 1.0 : 0.5)},
+          {"solver", {{"engine", "dem"}, {"timestep_safety", 0.2}}},
+          {"output", {{"sample_strain", quick ? 0.005 : 0.002}, {"fabric", true}, {"histograms", true}}}};
+}
+
+// A pile of discs settling under gravity in a box: the demo, and the speed benchmark's scene.
+json demoPile() {
+  json particles = json::array();
+  const double r = 0.002;
+  for (int row = 0; row < 20; ++row) {
+    for (int col = 0; col < 20; ++col) {
+      const double x = -0.042 + col * 2.2 * r + (row % 2) * 1.1 * r;
+      const double y = r * 1.2 + row * 2.2 * r;
+      particles.push_back({{"shape", "disc"}, {"radius", r * (0.9 + 0.1 * ((row * 7 + col * 3) % 5) / 4.0)},
+                           {"position", {x, y}}});
+    }
+  }
+  return {{"name", "demo-pile"},
+          {"seed", 1},
+          {"material", paperMaterial()},
+          {"particles", particles},
+          {"walls", json::array({{{"point", {0, 0}}, {"normal", {0, 1}}},
+                                 {{"point", {-0.045, 0}}, {"normal", {1, 0}}},
+                                 {{"point", {0.045, 0}}, {"normal", {-1, 0}}}})},
+          {"gravity", {0, -9.81}},
+          {"stages", json::array({{{"type", "free"}, {"name", "settling"}, {"duration", 0.3}}})},
+          {"output", {{"sample_interval", 0.01}}}};
+}
+
+const std::vector<std::pair<std::string, std::string>>& paperPresets() {
+  static const std::vector<std::pair<std::string, std::string>> presets{
+      {"circular", "circular"},           {"elongated-random", "random"},
+      {"elongated-bedding-0", "0"},       {"elongated-bedding-30", "30"},
+      {"elongated-bedding-60", "60"},     {"elongated-bedding-90", "90"}};
+  return presets;
+}
+
+}  // namespace
+
+std::vector<std::string> presetNames() {
+  std::vector<std::string> names;
+  for (const auto& p : paperPresets()) names.push_back(p.first);
+  for (const auto& p : paperPresets()) names.push_back(p.first + "-quick");
+  names.push_back("demo-pile");
+  return names;
+}
+
+json presetScene(const std::string& name) {
+  for (const auto& [preset, kind] : paperPresets()) {
+    if (name == preset) return paperScene(name, kind, false);
+    if (name == preset + "-quick") return paperScene(name, kind, true);
+  }
+  if (name == "demo-pile") return demoPile();
+  throw SceneError("preset", "unknown preset \"" + name + "\" (grainlab presets lists them)");
+}
+
+}  // namespace grainlab

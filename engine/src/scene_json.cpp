@@ -1,0 +1,206 @@
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/scene.hpp"
+#include "json_reader.hpp"
+
+namespace grainlab {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Material parseMaterial(const nlohmann::json& j) {
+  Material m;
+  if (j.is_null()) return m;
+  JsonReader r(j, "material");
+  m.density = r.number("density", m.density, 0, kInf, true);
+  m.normalStiffness = r.number("normal_stiffness", m.normalStiffness, 0, kInf, true);
+  m.tangentialStiffness = r.number("tangential_stiffness", m.tangentialStiffness, 0, kInf, true);
+  m.friction = r.number("friction", m.friction, 0, kInf);
+  m.restitution = r.number("restitution", m.restitution, 0, 1, true);
+  m.localDamping = r.number("local_damping", m.localDamping, 0, 1, false, true);
+  r.finish();
+  return m;
+}
+
+ParticleSpec parseParticle(const nlohmann::json& j, const std::string& path) {
+  JsonReader r(j, path);
+  ParticleSpec p;
+  const std::string shape = r.choice("shape", "disc", {"disc", "polygon"});
+  if (shape == "disc") {
+    p.shape = ShapeKind::Disc;
+    if (!r.has("radius")) throw SceneError(r.fieldPath("radius"), "a disc needs a radius");
+    p.radius = r.number("radius", 0, 0, kInf, true);
+  } else {
+    p.shape = ShapeKind::Polygon;
+    const nlohmann::json& vs = r.raw("vertices");
+    const std::string vpath = r.fieldPath("vertices");
+    if (!vs.is_array()) throw SceneError(vpath, "a polygon needs vertices [[x, y], ...]");
+    for (size_t k = 0; k < vs.size(); ++k) p.vertices.push_back(parseVec2(vs[k], vpath + "[" + std::to_string(k) + "]"));
+    try {
+      makePolygon(p.vertices);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(vpath, e.what());
+    }
+  }
+  p.position = r.vec2("position", p.position);
+  p.angle = r.number("angle", 0, -kInf, kInf);
+  p.velocity = r.vec2("velocity", p.velocity);
+  p.spin = r.number("spin", 0, -kInf, kInf);
+  const std::string motion = r.choice("motion", "dynamic", {"dynamic", "fixed", "kinematic"});
+  p.motion = motion == "dynamic" ? Motion::Dynamic : motion == "fixed" ? Motion::Fixed : Motion::Kinematic;
+  p.boundary = r.boolean("boundary", false);
+  r.finish();
+  return p;
+}
+
+Wall parseWall(const nlohmann::json& j, const std::string& path) {
+  JsonReader r(j, path);
+  Wall w;
+  w.point = r.vec2("point", w.point);
+  w.normal = r.vec2("normal", w.normal);
+  if (w.normal.norm() == 0) throw SceneError(r.fieldPath("normal"), "must not be zero");
+  w.normal.normalize();
+  r.finish();
+  return w;
+}
+
+StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
+  JsonReader r(j, path);
+  StageSpec s;
+  const std::string type = r.choice("type", "free", {"free", "compaction", "isotropic", "biaxial"});
+  s.name = r.string("name", type);
+  if (type == "free") {
+    s.type = StageSpec::Type::Free;
+    if (!r.has("duration")) throw SceneError(r.fieldPath("duration"), "a free stage needs a duration in s");
+    s.duration = r.number("duration", 0, 0, kInf, true);
+  } else if (type == "compaction") {
+    // The paper's stage 0: frictionless, until the particles touch with almost no force.
+    s.type = StageSpec::Type::Compaction;
+    s.pressure = r.number("pressure", 5e3, 0, kInf, true);
+    s.strainRate = r.number("strain_rate", 2.0, 0, kInf, true);
+    s.friction = r.number("friction", 0.0, 0, kInf);
+  } else if (type == "isotropic") {
+    s.type = StageSpec::Type::Isotropic;
+    s.pressure = r.number("pressure", 300e3, 0, kInf, true);
+    s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
+    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  } else {
+    s.type = StageSpec::Type::Biaxial;
+    s.pressure = r.number("pressure", 300e3, 0, kInf, true);
+    s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
+    s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
+    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  }
+  s.maxTime = r.number("max_time", 0, 0, kInf);
+  r.finish();
+  return s;
+}
+
+SolverSpec parseSolver(const nlohmann::json& j) {
+  SolverSpec s;
+  if (j.is_null()) return s;
+  JsonReader r(j, "solver");
+  const std::string engine = r.choice("engine", "dem", {"dem", "box2d"});
+  if (engine == "box2d") {
+    throw SceneError("solver.engine", "the box2d engine is not available in this build; use \"dem\"");
+  }
+  s.timestep = r.number("timestep", 0, 0, kInf);
+  s.timestepSafety = r.number("timestep_safety", s.timestepSafety, 0, 10, true);
+  r.finish();
+  return s;
+}
+
+OutputSpec parseOutput(const nlohmann::json& j) {
+  OutputSpec o;
+  if (j.is_null()) return o;
+  JsonReader r(j, "output");
+  o.sampleInterval = r.number("sample_interval", 0, 0, kInf);
+  o.sampleStrain = r.number("sample_strain", o.sampleStrain, 0, 0.5, true);
+  o.fabric = r.boolean("fabric", o.fabric);
+  o.histograms = r.boolean("histograms", o.histograms);
+  o.histogramBins = static_cast<int>(r.integer("histogram_bins", o.histogramBins, 18, 360));
+  r.finish();
+  return o;
+}
+
+}  // namespace
+
+Scene parseScene(const nlohmann::json& json) {
+  JsonReader r(json, "");
+  Scene scene;
+  scene.name = r.string("name", scene.name);
+  scene.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, std::numeric_limits<long long>::max()));
+  scene.material = parseMaterial(r.raw("material"));
+
+  const nlohmann::json& particles = r.raw("particles");
+  if (!particles.is_null()) {
+    if (!particles.is_array()) throw SceneError("particles", "must be an array");
+    for (size_t k = 0; k < particles.size(); ++k) {
+      scene.particles.push_back(parseParticle(particles[k], "particles[" + std::to_string(k) + "]"));
+    }
+  }
+  const nlohmann::json& assembly = r.raw("assembly");
+  if (!assembly.is_null()) scene.assembly = parseSpecimenRecipe(assembly, "assembly");
+  if (scene.particles.empty() && !scene.assembly) {
+    throw SceneError("particles", "the scene has no particles (give particles or an assembly)");
+  }
+
+  const nlohmann::json& walls = r.raw("walls");
+  if (!walls.is_null()) {
+    if (!walls.is_array()) throw SceneError("walls", "must be an array");
+    for (size_t k = 0; k < walls.size(); ++k) scene.walls.push_back(parseWall(walls[k], "walls[" + std::to_string(k) + "]"));
+  }
+  scene.gravity = r.vec2("gravity", scene.gravity);
+
+  const nlohmann::json& boundary = r.raw("boundary");
+  if (!boundary.is_null()) {
+    JsonReader b(boundary, "boundary");
+    const std::string type = b.choice("type", "none", {"none", "membrane"});
+    scene.boundary.type = type == "membrane" ? BoundarySpec::Type::Membrane : BoundarySpec::Type::None;
+    b.finish();
+  }
+  if (scene.boundary.type == BoundarySpec::Type::Membrane && !scene.assembly) {
+    throw SceneError("boundary.type", "a membrane boundary is generated with the assembly: give an assembly");
+  }
+
+  const nlohmann::json& stages = r.raw("stages");
+  if (!stages.is_null()) {
+    if (!stages.is_array()) throw SceneError("stages", "must be an array");
+    for (size_t k = 0; k < stages.size(); ++k) {
+      const std::string path = "stages[" + std::to_string(k) + "]";
+      StageSpec s = parseStage(stages[k], path);
+      if (s.type != StageSpec::Type::Free && scene.boundary.type != BoundarySpec::Type::Membrane) {
+        throw SceneError(path + ".type", "a " + s.name + " stage loads through the boundary ring: set boundary.type to \"membrane\"");
+      }
+      scene.stages.push_back(s);
+    }
+  }
+  if (scene.stages.empty()) {
+    StageSpec free;
+    free.name = "free";
+    free.duration = 0.01;
+    scene.stages.push_back(free);
+  }
+  scene.solver = parseSolver(r.raw("solver"));
+  scene.output = parseOutput(r.raw("output"));
+  r.finish();
+  return scene;
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError("(file)", "cannot read " + path);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SceneError("(json)", std::string("not valid JSON: ") + e.what());
+  }
+  return parseScene(j);
+}
+
+}  // namespace grainlab

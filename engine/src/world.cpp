@@ -1,0 +1,393 @@
+#include "grainlab/world.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "contact_geometry.hpp"
+#include "contact_law.hpp"
+#include "grainlab/errors.hpp"
+#include "neighbor_list.hpp"
+#include "polygon_collider.hpp"
+
+namespace grainlab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+}  // namespace
+
+World::World(const Material& material, WorldSettings settings)
+    : material_(material), settings_(settings), neighbors_(std::make_unique<NeighborList>()) {}
+
+World::~World() = default;
+
+int World::addParticle(const ParticleSpec& spec) {
+  const int index = size();
+  Vec2 centre = spec.position;
+  double area = 0, polar = 0, bounding = 0;
+  int shapeIndex = -1;
+  if (spec.shape == ShapeKind::Disc) {
+    if (!(spec.radius > 0) || !std::isfinite(spec.radius)) {
+      throw std::invalid_argument("disc radius must be positive and finite");
+    }
+    area = discArea(spec.radius);
+    polar = 0.5 * area * spec.radius * spec.radius;
+    bounding = spec.radius;
+  } else {
+    Vec2 centroid;
+    Polygon poly = makePolygon(spec.vertices, &centroid);
+    // Vertices are relative to `position` in the body frame turned by `angle`.
+    centre = spec.position + rotate(centroid, spec.angle);
+    area = poly.area;
+    polar = poly.polarMoment;
+    bounding = poly.circumradius;
+    shapeIndex = static_cast<int>(polygons_.size());
+    polygons_.push_back(poly);
+  }
+  const double mass = material_.density * area;
+  const double inertia = material_.density * polar;
+  const bool dynamic = spec.motion == Motion::Dynamic;
+  const bool moving = spec.motion != Motion::Fixed;
+
+  position_.push_back(centre);
+  angle_.push_back(spec.angle);
+  velocity_.push_back(moving ? spec.velocity : Vec2::Zero());
+  spin_.push_back(moving ? spec.spin : 0.0);
+  force_.push_back(Vec2::Zero());
+  torque_.push_back(0.0);
+  invMass_.push_back(dynamic ? 1.0 / mass : 0.0);
+  invInertia_.push_back(dynamic ? 1.0 / inertia : 0.0);
+  mass_.push_back(mass);
+  inertia_.push_back(inertia);
+  boundingRadius_.push_back(bounding);
+  shape_.push_back(spec.shape);
+  motion_.push_back(spec.motion);
+  boundary_.push_back(spec.boundary ? 1 : 0);
+  shapeIndex_.push_back(shapeIndex);
+  prepared_ = false;
+  return index;
+}
+
+int World::addWall(const Wall& wall) {
+  Wall w = wall;
+  const double len = w.normal.norm();
+  if (!(len > 0) || !std::isfinite(len)) throw std::invalid_argument("wall normal must be non-zero");
+  w.normal /= len;
+  walls_.push_back(w);
+  prepared_ = false;
+  return static_cast<int>(walls_.size()) - 1;
+}
+
+void World::setFriction(double mu) {
+  if (mu == material_.friction) return;
+  material_.friction = mu;
+  // A spring built up under another friction would be stale; frictionless keeps none.
+  for (PairState& p : neighbors_->pairs()) p.history = 0;
+}
+
+double World::criticalTimestep() const {
+  double dt = std::numeric_limits<double>::infinity();
+  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
+  for (int k = 0; k < size(); ++k) {
+    const double r = boundingRadius_[k];
+    const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
+    const double stiffest = std::max(kn, kt * rotational);
+    dt = std::min(dt, 2.0 * std::sqrt(0.5 * mass_[k] / stiffest));
+  }
+  return dt;
+}
+
+double World::timestep() const {
+  return timestep_ > 0 ? timestep_ : timestepSafety_ * criticalTimestep();
+}
+
+void World::setKinematicVelocity(int i, const Vec2& v, double spin) {
+  if (motion_[i] != Motion::Kinematic) return;
+  velocity_[i] = v;
+  spin_[i] = spin;
+}
+
+double World::area(int i) const {
+  return shape_[i] == ShapeKind::Disc ? discArea(boundingRadius_[i])
+                                      : polygons_[static_cast<size_t>(shapeIndex_[i])].area;
+}
+
+void World::worldVertices(int i, std::vector<Vec2>& out) const {
+  const Polygon& poly = polygon(i);
+  out.resize(static_cast<size_t>(poly.count));
+  for (int k = 0; k < poly.count; ++k) out[k] = position_[i] + rotate(poly.vertices[k], angle_[i]);
+}
+
+void World::prepare() {
+  // Box2D sees polygons scaled to about one unit (its tuning range).
+  double meanPolygonRadius = 0;
+  for (const Polygon& p : polygons_) meanPolygonRadius += p.circumradius;
+  const double scale = polygons_.empty() ? 1.0 : polygons_.size() / meanPolygonRadius;
+  polygonCollider_ = std::make_unique<PolygonCollider>(scale);
+  for (const Polygon& p : polygons_) polygonCollider_->add(p);
+  double meanRadius = 0;
+  for (double r : boundingRadius_) meanRadius += r;
+  skin_ = size() ? settings_.skinFraction * meanRadius / size() : 0.0;
+  neighbors_->invalidate();
+  prepared_ = true;
+  if (timestep() <= 0 || !std::isfinite(timestep())) {
+    throw SimulationError("no usable timestep: the scene has no particle with mass");
+  }
+  computeForces();
+}
+
+void World::step() {
+  if (!prepared_) prepare();
+  const double dt = timestep();
+  auto t0 = Clock::now();
+  kick(dt);
+  drift(dt);
+  auto t1 = Clock::now();
+  computeForces();
+  profile_.integrate += seconds(t0, t1);
+  ++steps_;
+  time_ += dt;
+}
+
+void World::kick(double dt) {
+  const int n = size();
+  for (int k = 0; k < n; ++k) {
+    velocity_[k] += force_[k] * (invMass_[k] * dt);
+    spin_[k] += torque_[k] * (invInertia_[k] * dt);
+  }
+}
+
+void World::drift(double dt) {
+  const int n = size();
+  for (int k = 0; k < n; ++k) {
+    position_[k] += velocity_[k] * dt;
+    angle_[k] += spin_[k] * dt;
+  }
+}
+
+// The contact between the two members of a pair, whatever their shapes.
+static ContactGeometry pairGeometry(const PairState& p, std::span<const Vec2> x,
+                                    std::span<const double> angle, std::span<const double> radius,
+                                    std::span<const ShapeKind> shape, std::span<const int> shapeIndex,
+                                    std::span<const Polygon> polygons, std::span<const Wall> walls,
+                                    const PolygonCollider& collider) {
+  const int i = p.i, j = p.j;
+  if (j < 0) {
+    const Wall& wall = walls[static_cast<size_t>(-1 - j)];
+    return shape[i] == ShapeKind::Disc
+               ? collideDiscWall(x[i], radius[i], wall)
+               : collidePolygonWall(polygons[static_cast<size_t>(shapeIndex[i])], x[i], angle[i], wall);
+  }
+  const double reach = radius[i] + radius[j];
+  if ((x[j] - x[i]).squaredNorm() >= reach * reach) return {};  // bounding circles apart
+  const bool iDisc = shape[i] == ShapeKind::Disc, jDisc = shape[j] == ShapeKind::Disc;
+  if (iDisc && jDisc) return collideDiscs(x[i], radius[i], x[j], radius[j]);
+  if (!iDisc && !jDisc) {
+    return collider.collidePolygons(shapeIndex[i], x[i], angle[i], shapeIndex[j], x[j], angle[j]);
+  }
+  if (!iDisc) return collider.collidePolygonDisc(shapeIndex[i], x[i], angle[i], x[j], radius[j]);
+  ContactGeometry g = collider.collidePolygonDisc(shapeIndex[j], x[j], angle[j], x[i], radius[i]);
+  g.normal = -g.normal;
+  return g;
+}
+
+template <class Law, bool kDiscsOnly>
+void World::pairForces(const Law& law) {
+  const double dt = timestep();
+  const Vec2* x = position_.data();
+  const Vec2* v = velocity_.data();
+  const double* w = spin_.data();
+  const double* radius = boundingRadius_.data();
+  Vec2* f = force_.data();
+  double* tau = torque_.data();
+  for (PairState& p : neighbors_->pairs()) {
+    const int i = p.i, j = p.j;
+    ContactGeometry g;
+    if constexpr (kDiscsOnly) {
+      g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
+                 : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
+    } else {
+      g = pairGeometry(p, position_, angle_, boundingRadius_, shape_, shapeIndex_, polygons_, walls_,
+                       *polygonCollider_);
+    }
+    if (g.overlap <= 0) {
+      p.history = 0;
+      p.fn = p.ft = p.overlap = 0;
+      continue;
+    }
+    const Vec2& n = g.normal;
+    const Vec2 t = perp(n);
+    const Vec2 ri = g.point - x[i];
+    Vec2 dv = -(v[i] + cross(w[i], ri));
+    Vec2 rj = Vec2::Zero();
+    if (j >= 0) {
+      rj = g.point - x[j];
+      dv += v[j] + cross(w[j], rj);
+    }
+    const ContactMotion motion{g.overlap, dv.dot(n), dv.dot(t)};
+    const double fn = law.normal.force(motion, p.dampN);
+    const double ft = law.tangential.force(fn, motion, p.dampT, dt, p.history);
+    const Vec2 F = fn * n + ft * t;  // on j from i
+    f[i] -= F;
+    tau[i] -= cross(ri, F);
+    if (j >= 0) {
+      f[j] += F;
+      tau[j] += cross(rj, F);
+    }
+    p.fn = fn;
+    p.ft = ft;
+    p.overlap = g.overlap;
+  }
+}
+
+void World::assignDamping() {
+  const double zeta = dampingRatio(material_.restitution);
+  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
+  for (PairState& p : neighbors_->pairs()) {
+    // Effective mass of the pair: against a wall or an immovable particle, the particle's own.
+    const double mi = mass_[p.i];
+    double m = mi;
+    if (p.j >= 0 && motion_[p.j] == Motion::Dynamic && motion_[p.i] == Motion::Dynamic) {
+      m = mi * mass_[p.j] / (mi + mass_[p.j]);
+    } else if (p.j >= 0 && motion_[p.i] != Motion::Dynamic) {
+      m = mass_[p.j];
+    }
+    p.dampN = 2 * zeta * std::sqrt(m * kn);
+    p.dampT = 2 * zeta * std::sqrt(m * kt);
+  }
+}
+
+void World::computeForces() {
+  auto t0 = Clock::now();
+  if (neighbors_->update(position_, boundingRadius_, motion_, walls_, skin_)) {
+    assignDamping();
+    ++profile_.rebuilds;
+  }
+  auto t1 = Clock::now();
+  const int n = size();
+  for (int k = 0; k < n; ++k) {
+    force_[k] = motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero();
+    torque_[k] = 0;
+  }
+  // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
+  // polygon code, a frictionless one keeps no tangential history.
+  const LinearSpringDashpot normal{material_.normalStiffness};
+  const bool discsOnly = polygons_.empty();
+  if (material_.friction == 0) {
+    const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
+    discsOnly ? pairForces<decltype(law), true>(law) : pairForces<decltype(law), false>(law);
+  } else {
+    const ContactLaw<LinearSpringDashpot, CundallStrack> law{
+        normal, {material_.tangentialStiffness, material_.friction}};
+    discsOnly ? pairForces<decltype(law), true>(law) : pairForces<decltype(law), false>(law);
+  }
+  if (material_.localDamping > 0) applyLocalDamping();
+  auto t2 = Clock::now();
+  profile_.neighbors += seconds(t0, t1);
+  profile_.forces += seconds(t1, t2);
+}
+
+void World::applyLocalDamping() {
+  // Cundall's non-viscous damping: each force component is reduced by α|F| against the
+  // direction of motion, so it removes energy without slowing a steady drift.
+  const double a = material_.localDamping;
+  auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
+  for (int k = 0; k < size(); ++k) {
+    if (motion_[k] != Motion::Dynamic) continue;
+    Vec2& f = force_[k];
+    f.x() -= a * std::abs(f.x()) * sign(velocity_[k].x());
+    f.y() -= a * std::abs(f.y()) * sign(velocity_[k].y());
+    torque_[k] -= a * std::abs(torque_[k]) * sign(spin_[k]);
+  }
+}
+
+void World::contacts(std::vector<ContactRecord>& out) const {
+  out.clear();
+  if (!prepared_) return;
+  for (const PairState& p : neighbors_->pairs()) {
+    if (p.overlap <= 0) continue;
+    const ContactGeometry g = pairGeometry(p, position_, angle_, boundingRadius_, shape_, shapeIndex_,
+                                           polygons_, walls_, *polygonCollider_);
+    ContactRecord c;
+    c.i = p.i;
+    c.j = p.j;
+    c.point = g.point;
+    c.normal = g.normal;
+    c.fn = p.fn;
+    c.ft = p.ft;
+    c.overlap = p.overlap;
+    out.push_back(c);
+  }
+}
+
+double World::kineticEnergy() const {
+  // Velocities live half a step behind the positions (leapfrog); the energy is taken with
+  // them brought to the positions' time, v + a·dt/2, as velocity Verlet would report it.
+  const double half = 0.5 * timestep();
+  double e = 0;
+  for (int k = 0; k < size(); ++k) {
+    if (motion_[k] != Motion::Dynamic) continue;
+    const Vec2 v = velocity_[k] + force_[k] * (invMass_[k] * half);
+    const double w = spin_[k] + torque_[k] * invInertia_[k] * half;
+    e += 0.5 * mass_[k] * v.squaredNorm() + 0.5 * inertia_[k] * w * w;
+  }
+  return e;
+}
+
+double World::elasticEnergy() const {
+  double e = 0;
+  const LinearSpringDashpot normal{material_.normalStiffness};
+  const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
+  for (const PairState& p : neighbors_->pairs()) {
+    if (p.overlap <= 0) continue;
+    e += normal.energy(p.overlap) + tangential.energy(p.history);
+  }
+  return e;
+}
+
+double World::potentialEnergy() const {
+  double e = 0;
+  for (int k = 0; k < size(); ++k) {
+    if (motion_[k] == Motion::Dynamic) e -= mass_[k] * gravity_.dot(position_[k]);
+  }
+  return e;
+}
+
+void World::checkHealth() const {
+  for (int k = 0; k < size(); ++k) {
+    const bool finite = std::isfinite(position_[k].x()) && std::isfinite(position_[k].y()) &&
+                        std::isfinite(velocity_[k].x()) && std::isfinite(velocity_[k].y()) &&
+                        std::isfinite(angle_[k]) && std::isfinite(spin_[k]);
+    if (!finite) {
+      std::ostringstream os;
+      os << "particle " << k << " has a non-finite position or velocity at step " << steps_
+         << " (t = " << time_ << " s): the simulation diverged; the timestep " << timestep()
+         << " s against a critical timestep of " << criticalTimestep() << " s is the usual cause";
+      throw SimulationError(os.str());
+    }
+  }
+  for (const PairState& p : neighbors_->pairs()) {
+    if (p.overlap <= 0) continue;
+    const double size = p.j >= 0 ? std::min(boundingRadius_[p.i], boundingRadius_[p.j]) : boundingRadius_[p.i];
+    if (p.overlap > 0.5 * size) {
+      std::ostringstream os;
+      os << "runaway overlap at step " << steps_ << ": ";
+      if (p.j >= 0) os << "particles " << p.i << " and " << p.j;
+      else os << "particle " << p.i << " and wall " << (-1 - p.j);
+      os << " overlap by " << 100 * p.overlap / size
+         << "% of the smaller particle's radius; the contacts are too soft for the load or the"
+            " timestep ("
+         << timestep() << " s, critical " << criticalTimestep() << " s) is too large";
+      throw SimulationError(os.str());
+    }
+  }
+}
+
+}  // namespace grainlab
