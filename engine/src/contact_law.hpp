@@ -18,13 +18,13 @@ struct ContactMotion {
   double vt;       ///< m/s
 };
 
-/// Linear spring-dashpot: f_n = k_n δ − c_n v_n, never attractive.
+/// Linear spring-dashpot: f_n = k_n δ − c_n v_n. As in LAMMPS's default, the dashpot may
+/// pull slightly at the very end of a collision's unloading: that is what makes the
+/// restitution of a binary collision exactly e (clamping at zero would release the pair
+/// early and raise the rebound speed).
 struct LinearSpringDashpot {
   double stiffness;  ///< k_n, N/m
-  double force(const ContactMotion& c, double damping) const {
-    const double f = stiffness * c.overlap - damping * c.vn;
-    return f > 0 ? f : 0;
-  }
+  double force(const ContactMotion& c, double damping) const { return stiffness * c.overlap - damping * c.vn; }
   double energy(double overlap) const { return 0.5 * stiffness * overlap * overlap; }
 };
 
@@ -38,7 +38,7 @@ struct CundallStrack {
   double force(double fn, const ContactMotion& c, double damping, double dt, double& history) const {
     history += c.vt * dt;
     double ft = -stiffness * history - damping * c.vt;
-    const double cap = friction * fn;
+    const double cap = fn > 0 ? friction * fn : 0.0;
     if (std::abs(ft) > cap) {
       ft = std::copysign(cap, ft);
       history = -(ft + damping * c.vt) / stiffness;  // spring + dashpot sit at the cap

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace grainlab {
 
@@ -39,7 +40,14 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     lo = lo.cwiseMin(positions[k]);
     hi = hi.cwiseMax(positions[k]);
   }
-  const double cell = std::max(2 * rmax + skin, 1e-12);
+  if (n && !(std::isfinite(lo.x()) && std::isfinite(lo.y()) && std::isfinite(hi.x()) && std::isfinite(hi.y()))) {
+    throw std::domain_error("non-finite particle position");
+  }
+  double cell = std::max(2 * rmax + skin, 1e-12);
+  // A sparse scene (a particle flung far away) must not allocate a huge grid: widen the
+  // cells until there are at most a few per particle.
+  const double maxCells = 4.0 * n + 16;
+  while (((hi.x() - lo.x()) / cell + 1) * ((hi.y() - lo.y()) / cell + 1) > maxCells) cell *= 2;
   const int nx = n ? std::max(1, static_cast<int>((hi.x() - lo.x()) / cell) + 1) : 1;
   const int ny = n ? std::max(1, static_cast<int>((hi.y() - lo.y()) / cell) + 1) : 1;
   auto cellOf = [&](const Vec2& x, int& cx, int& cy) {

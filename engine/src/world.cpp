@@ -266,7 +266,14 @@ void World::assignDamping() {
 
 void World::computeForces() {
   auto t0 = Clock::now();
-  if (neighbors_->update(position_, boundingRadius_, motion_, walls_, skin_)) {
+  bool rebuilt = false;
+  try {
+    rebuilt = neighbors_->update(position_, boundingRadius_, motion_, walls_, skin_);
+  } catch (const std::domain_error&) {
+    checkHealth();  // names the particle and the likely cause
+    throw;
+  }
+  if (rebuilt) {
     assignDamping();
     ++profile_.rebuilds;
   }

@@ -1,0 +1,87 @@
+// Scene JSON: defaults, and errors that name the field and the reason.
+#include <gtest/gtest.h>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/presets.hpp"
+#include "grainlab/scene.hpp"
+
+namespace grainlab {
+namespace {
+
+using nlohmann::json;
+
+json oneDisc() {
+  return json::parse(R"({"particles": [{"shape": "disc", "radius": 0.002, "position": [0, 0]}]})");
+}
+
+std::string fieldOf(const json& j) {
+  try {
+    parseScene(j);
+  } catch (const SceneError& e) {
+    EXPECT_FALSE(e.reason().empty());
+    return e.field();
+  }
+  return "(accepted)";
+}
+
+TEST(Scene, DefaultsFillOmittedKeys) {
+  const Scene s = parseScene(oneDisc());
+  EXPECT_EQ(s.particles.size(), 1u);
+  EXPECT_EQ(s.material.density, 2650);
+  EXPECT_EQ(s.material.friction, 0.5);
+  ASSERT_EQ(s.stages.size(), 1u);
+  EXPECT_EQ(s.stages[0].type, StageSpec::Type::Free);
+}
+
+TEST(Scene, ErrorsNameTheField) {
+  json j = oneDisc();
+  j["material"] = {{"friction", -1}};
+  EXPECT_EQ(fieldOf(j), "material.friction");
+  j = oneDisc();
+  j["material"] = {{"restitution", 0}};
+  EXPECT_EQ(fieldOf(j), "material.restitution");
+  j = oneDisc();
+  j["particles"][0]["radius"] = "big";
+  EXPECT_EQ(fieldOf(j), "particles[0].radius");
+  j = oneDisc();
+  j["particles"][0]["colour"] = "red";
+  EXPECT_EQ(fieldOf(j), "particles[0].colour");
+  j = oneDisc();
+  j["particles"].push_back({{"shape", "polygon"}, {"vertices", {{0, 0}, {1, 0}}}});
+  EXPECT_EQ(fieldOf(j), "particles[1].vertices");
+  j = oneDisc();
+  j["particles"].push_back({{"shape", "polygon"}, {"vertices", {{0, 0}, {1, 0}, {0.5, 0.1}, {0.5, 1}}}});
+  EXPECT_EQ(fieldOf(j), "particles[1].vertices");  // not convex
+  j = oneDisc();
+  j["stages"] = {{{"type", "biaxial"}}};
+  EXPECT_EQ(fieldOf(j), "stages[0].type");  // needs a membrane
+  j = oneDisc();
+  j["stages"] = {{{"type", "free"}}};
+  EXPECT_EQ(fieldOf(j), "stages[0].duration");
+  j = oneDisc();
+  j["solver"] = {{"timestep", -1e-6}};
+  EXPECT_EQ(fieldOf(j), "solver.timestep");
+  j = oneDisc();
+  j["gravity"] = {0};
+  EXPECT_EQ(fieldOf(j), "gravity");
+  j = oneDisc();
+  j["typo"] = 1;
+  EXPECT_EQ(fieldOf(j), "typo");
+  EXPECT_EQ(fieldOf(json::object()), "particles");  // an empty scene is refused
+  EXPECT_EQ(fieldOf(json::array()), "(scene)");
+}
+
+TEST(Scene, EveryPresetParses) {
+  for (const std::string& name : presetNames()) {
+    EXPECT_NO_THROW(parseScene(presetScene(name))) << name;
+  }
+  try {
+    presetScene("no-such-preset");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.field(), "preset");
+  }
+}
+
+}  // namespace
+}  // namespace grainlab
