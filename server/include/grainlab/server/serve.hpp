@@ -1,0 +1,37 @@
+#pragma once
+// `grainlab serve`: the REST + WebSocket service that queues runs, streams them live and keeps
+// them in SQLite. The HTTP API is in docs/http-api.md, the stream in docs/stream-protocol.md.
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "grainlab/run.hpp"
+
+namespace grainlab::server {
+
+/// Runs one scene to the end, reporting to the observer. The server uses grainlab::runScene;
+/// tests inject their own.
+using RunFunction = std::function<RunSummary(const Scene&, RunObserver&)>;
+
+struct ServeOptions {
+  std::string host = "127.0.0.1";       ///< address to bind; loopback unless told otherwise
+  unsigned short port = 8080;           ///< 0 picks a free port (printed on stderr)
+  std::string db = "data/grainlab.db";  ///< SQLite file; its parent directory is created
+  std::string webRoot = "web";          ///< static files served at /
+  int maxConcurrentRuns = 0;            ///< runs simulated at once; 0 = the machine's cores
+  int maxQueuedRuns = 64;               ///< runs waiting beyond that; more get 429
+  int maxParticles = 50000;             ///< per run (explicit plus generated); more get 503
+  std::size_t maxBodyBytes = 8u << 20;  ///< request body limit; larger bodies get 413
+  int ioThreads = 2;                    ///< threads serving HTTP and WebSocket I/O
+  double framesPerSecond = 20;          ///< live particle frames per run, at most
+  int replayFrameEvery = 4;             ///< store a replay frame every N samples (and the last)
+  /// Replaces grainlab::runScene (tests); empty = the real engine.
+  RunFunction runFunction;
+};
+
+/// Serves until SIGINT or SIGTERM, then stops the runs (they end `interrupted`), flushes the
+/// database and returns 0. Returns non-zero with a message on stderr if it cannot start
+/// (port in use, database unusable).
+int serve(const ServeOptions& options);
+
+}  // namespace grainlab::server

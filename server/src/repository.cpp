@@ -1,0 +1,513 @@
+#include "repository.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include "sqlite.hpp"
+
+namespace grainlab::server {
+namespace {
+
+// Schema migrations: entry k takes user_version k to k + 1. Append, never edit.
+constexpr const char* kMigrations[] = {
+    R"sql(
+    CREATE TABLE runs (
+      id                INTEGER PRIMARY KEY AUTOINCREMENT,  -- ids are never reused
+      name              TEXT NOT NULL,
+      preset            TEXT NOT NULL DEFAULT '',
+      scene             TEXT NOT NULL,
+      status            TEXT NOT NULL,
+      error             TEXT NOT NULL DEFAULT '',
+      stage             TEXT NOT NULL DEFAULT '',
+      progress          REAL NOT NULL DEFAULT 0,
+      particles         INTEGER NOT NULL DEFAULT 0,
+      steps             INTEGER NOT NULL DEFAULT 0,
+      created_at        REAL NOT NULL,
+      started_at        REAL,
+      finished_at       REAL,
+      wall_seconds      REAL,
+      peak_phi_mob_deg  REAL,
+      shapes            TEXT
+    );
+    CREATE TABLE samples (
+      run_id  INTEGER NOT NULL,
+      seq     INTEGER NOT NULL,
+      step    INTEGER NOT NULL,
+      time    REAL NOT NULL,
+      stage   TEXT NOT NULL,
+      vals    BLOB NOT NULL,          -- little-endian float64, one per Sample::values entry
+      PRIMARY KEY (run_id, seq)
+    );
+    CREATE TABLE histograms (
+      run_id  INTEGER NOT NULL,
+      seq     INTEGER NOT NULL,
+      step    INTEGER NOT NULL,
+      data    TEXT NOT NULL,          -- the stream's "histogram" message
+      PRIMARY KEY (run_id, seq)
+    );
+    CREATE TABLE frames (
+      run_id  INTEGER NOT NULL,
+      seq     INTEGER NOT NULL,
+      step    INTEGER NOT NULL,
+      time    REAL NOT NULL,
+      data    BLOB NOT NULL,          -- the stream's binary frame
+      PRIMARY KEY (run_id, seq)
+    );
+    )sql",
+};
+
+// Every statement the server runs, by name.
+namespace sql {
+constexpr const char* kListRuns =
+    "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg FROM runs ORDER BY id";
+constexpr const char* kFindRun =
+    "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg FROM runs "
+    "WHERE id = :id";
+constexpr const char* kSamples =
+    "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
+constexpr const char* kHistograms =
+    "SELECT data FROM histograms WHERE run_id = :id ORDER BY seq";
+constexpr const char* kLatestHistogram =
+    "SELECT data FROM histograms WHERE run_id = :id ORDER BY seq DESC LIMIT 1";
+constexpr const char* kFrames =
+    "SELECT seq, step, time, length(data) FROM frames WHERE run_id = :id ORDER BY seq";
+constexpr const char* kFrameBySeq = "SELECT data FROM frames WHERE run_id = :id AND seq = :seq";
+constexpr const char* kFrameAtStep =
+    "SELECT data FROM frames WHERE run_id = :id AND step <= :step ORDER BY seq DESC LIMIT 1";
+constexpr const char* kLastFrame =
+    "SELECT data FROM frames WHERE run_id = :id ORDER BY seq DESC LIMIT 1";
+constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shapes IS NOT NULL";
+
+constexpr const char* kInsertRun =
+    "INSERT INTO runs (name, preset, scene, status, particles, created_at) "
+    "VALUES (:name, :preset, :scene, :status, :particles, :created_at)";
+constexpr const char* kMarkStarted =
+    "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
+constexpr const char* kUpdateProgress =
+    "UPDATE runs SET progress = :progress, stage = :stage, steps = :steps WHERE id = :id";
+constexpr const char* kSetShapes =
+    "UPDATE runs SET shapes = :shapes, particles = :particles WHERE id = :id";
+constexpr const char* kInsertSample =
+    "INSERT OR REPLACE INTO samples (run_id, seq, step, time, stage, vals) "
+    "VALUES (:id, :seq, :step, :time, :stage, :vals)";
+constexpr const char* kInsertHistogram =
+    "INSERT OR REPLACE INTO histograms (run_id, seq, step, data) VALUES (:id, :seq, :step, :data)";
+constexpr const char* kInsertFrame =
+    "INSERT OR REPLACE INTO frames (run_id, seq, step, time, data) "
+    "VALUES (:id, :seq, :step, :time, :data)";
+constexpr const char* kFinishRun =
+    "UPDATE runs SET status = :status, error = :error, stage = :stage, finished_at = :finished_at, "
+    "wall_seconds = :wall_seconds, steps = :steps, particles = :particles, "
+    "peak_phi_mob_deg = :peak, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
+    "WHERE id = :id";
+constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
+constexpr const char* kDeleteSamples = "DELETE FROM samples WHERE run_id = :id";
+constexpr const char* kDeleteHistograms = "DELETE FROM histograms WHERE run_id = :id";
+constexpr const char* kDeleteFrames = "DELETE FROM frames WHERE run_id = :id";
+constexpr const char* kInterruptUnfinished =
+    "UPDATE runs SET status = 'interrupted', "
+    "error = 'the server stopped before the run ended' "
+    "WHERE status IN ('queued', 'running')";
+}  // namespace sql
+
+void bindOptional(StatementUse& use, const char* name, const std::optional<double>& value) {
+  if (value) use.bind(name, *value);
+  else use.bindNull(name);
+}
+
+std::optional<double> optionalAt(StatementUse& use, int column) {
+  if (use.isNull(column)) return std::nullopt;
+  return use.doubleAt(column);
+}
+
+RunRecord readRun(StatementUse& use) {
+  RunRecord r;
+  r.id = use.int64At(0);
+  r.name = use.textAt(1);
+  r.preset = use.textAt(2);
+  r.scene = use.textAt(3);
+  r.status = use.textAt(4);
+  r.error = use.textAt(5);
+  r.stage = use.textAt(6);
+  r.progress = use.doubleAt(7);
+  r.particles = static_cast<int>(use.int64At(8));
+  r.steps = use.int64At(9);
+  r.createdAt = use.doubleAt(10);
+  r.startedAt = optionalAt(use, 11);
+  r.finishedAt = optionalAt(use, 12);
+  r.wallSeconds = optionalAt(use, 13);
+  r.peakPhiMobDeg = optionalAt(use, 14);
+  return r;
+}
+
+// Doubles are stored as their bytes (the machine is little-endian, as the frame format is).
+std::string packValues(const std::vector<double>& values) {
+  std::string bytes(values.size() * sizeof(double), '\0');
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
+}
+
+std::vector<double> unpackValues(const std::string& bytes) {
+  std::vector<double> values(bytes.size() / sizeof(double));
+  if (!values.empty()) std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
+  return values;
+}
+
+}  // namespace
+
+// A read connection with its statements, prepared on first use.
+struct Repository::Reader {
+  explicit Reader(const std::string& path) : db(path, false) {}
+  Statement& statement(const char* text) {
+    auto it = statements.find(text);
+    if (it == statements.end())
+      it = statements.emplace(text, std::make_unique<Statement>(db, text)).first;
+    return *it->second;
+  }
+  Database db;
+  std::map<const char*, std::unique_ptr<Statement>> statements;
+};
+
+// Borrows a reader for one call and gives it back.
+class Repository::ReaderLease {
+ public:
+  ReaderLease(Repository& repo, std::unique_ptr<Reader> reader)
+      : repo_(repo), reader_(std::move(reader)) {}
+  ~ReaderLease() {
+    std::lock_guard lock(repo_.readersMutex_);
+    repo_.idleReaders_.push_back(std::move(reader_));
+  }
+  Statement& statement(const char* text) { return reader_->statement(text); }
+
+ private:
+  Repository& repo_;
+  std::unique_ptr<Reader> reader_;
+};
+
+// The writer's connection and statements; touched only by the writer thread.
+struct Repository::Writer {
+  explicit Writer(const std::string& path) : db(path, true) {}
+  Statement& statement(const char* text) {
+    auto it = statements.find(text);
+    if (it == statements.end())
+      it = statements.emplace(text, std::make_unique<Statement>(db, text)).first;
+    return *it->second;
+  }
+  Database db;
+  std::map<const char*, std::unique_ptr<Statement>> statements;
+  std::vector<std::function<void()>> afterCommit;
+};
+
+Repository::Repository(const std::string& path) : path_(path) {
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+
+  writer_ = std::make_unique<Writer>(path);
+  Database& db = writer_->db;
+  db.exec("PRAGMA journal_mode = WAL");
+  // WAL with NORMAL sync survives a killed process (not a power cut) at a fraction of the cost.
+  db.exec("PRAGMA synchronous = NORMAL");
+  const auto version = db.userVersion();
+  constexpr auto count = static_cast<std::int64_t>(std::size(kMigrations));
+  if (version > count)
+    throw SqliteError(path + " has schema version " + std::to_string(version) +
+                      ", newer than this program's " + std::to_string(count));
+  for (auto v = version; v < count; ++v) {
+    db.exec("BEGIN IMMEDIATE");
+    try {
+      db.exec(kMigrations[v]);
+      db.exec(("PRAGMA user_version = " + std::to_string(v + 1)).c_str());
+      db.exec("COMMIT");
+    } catch (...) {
+      db.exec("ROLLBACK");
+      throw;
+    }
+  }
+  {
+    auto use = writer_->statement(sql::kInterruptUnfinished).use();
+    use.run();
+  }
+  writerThread_ = std::thread([this] { writerLoop(); });
+}
+
+Repository::~Repository() {
+  {
+    std::lock_guard lock(jobsMutex_);
+    stopping_ = true;
+  }
+  jobsReady_.notify_all();
+  writerThread_.join();
+}
+
+int Repository::schemaVersion() { return static_cast<int>(std::size(kMigrations)); }
+
+void Repository::enqueue(Job job) {
+  {
+    std::lock_guard lock(jobsMutex_);
+    jobs_.push_back(std::move(job));
+  }
+  jobsReady_.notify_one();
+}
+
+void Repository::writerLoop() {
+  Writer& w = *writer_;
+  for (;;) {
+    std::deque<Job> batch;
+    {
+      std::unique_lock lock(jobsMutex_);
+      jobsReady_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+      if (jobs_.empty()) return;  // stopping with nothing left
+      batch.swap(jobs_);
+    }
+    // One transaction per batch: a run's samples arrive many per second, and one COMMIT per
+    // row would cost a WAL sync each.
+    try {
+      w.db.exec("BEGIN IMMEDIATE");
+      for (auto& job : batch) {
+        try {
+          job(w);
+        } catch (const std::exception& e) {
+          std::cerr << "grainlab serve: database write failed: " << e.what() << "\n";
+        }
+      }
+      w.db.exec("COMMIT");
+    } catch (const std::exception& e) {
+      std::cerr << "grainlab serve: database commit failed: " << e.what() << "\n";
+      try {
+        w.db.exec("ROLLBACK");
+      } catch (const std::exception&) {
+        // Nothing was open: the BEGIN itself failed.
+      }
+    }
+    auto callbacks = std::move(w.afterCommit);
+    w.afterCommit.clear();
+    for (auto& callback : callbacks) callback();
+  }
+}
+
+Repository::ReaderLease Repository::lease() {
+  std::unique_ptr<Reader> reader;
+  {
+    std::lock_guard lock(readersMutex_);
+    if (!idleReaders_.empty()) {
+      reader = std::move(idleReaders_.back());
+      idleReaders_.pop_back();
+    }
+  }
+  if (!reader) reader = std::make_unique<Reader>(path_);
+  return ReaderLease(*this, std::move(reader));
+}
+
+std::vector<RunRecord> Repository::listRuns() {
+  auto reader = lease();
+  auto use = reader.statement(sql::kListRuns).use();
+  std::vector<RunRecord> runs;
+  while (use.step()) runs.push_back(readRun(use));
+  return runs;
+}
+
+std::optional<RunRecord> Repository::findRun(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kFindRun).use();
+  use.bind(":id", id);
+  if (!use.step()) return std::nullopt;
+  return readRun(use);
+}
+
+std::vector<SampleRecord> Repository::samples(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kSamples).use();
+  use.bind(":id", id);
+  std::vector<SampleRecord> rows;
+  while (use.step()) {
+    SampleRecord s;
+    s.seq = use.int64At(0);
+    s.step = use.int64At(1);
+    s.time = use.doubleAt(2);
+    s.stage = use.textAt(3);
+    s.values = unpackValues(use.blobAt(4));
+    rows.push_back(std::move(s));
+  }
+  return rows;
+}
+
+std::vector<std::string> Repository::histograms(std::int64_t id, bool latestOnly) {
+  auto reader = lease();
+  auto use = reader.statement(latestOnly ? sql::kLatestHistogram : sql::kHistograms).use();
+  use.bind(":id", id);
+  std::vector<std::string> out;
+  while (use.step()) out.push_back(use.textAt(0));
+  return out;
+}
+
+std::vector<FrameInfo> Repository::frames(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kFrames).use();
+  use.bind(":id", id);
+  std::vector<FrameInfo> out;
+  while (use.step())
+    out.push_back({use.int64At(0), use.int64At(1), use.doubleAt(2), use.int64At(3)});
+  return out;
+}
+
+std::optional<std::string> Repository::frame(std::int64_t id, std::int64_t seq,
+                                             std::int64_t step) {
+  auto reader = lease();
+  auto use = reader.statement(seq >= 0 ? sql::kFrameBySeq : sql::kFrameAtStep).use();
+  use.bind(":id", id);
+  if (seq >= 0) use.bind(":seq", seq);
+  else use.bind(":step", step);
+  if (!use.step()) return std::nullopt;
+  return use.blobAt(0);
+}
+
+std::optional<std::string> Repository::lastFrame(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kLastFrame).use();
+  use.bind(":id", id);
+  if (!use.step()) return std::nullopt;
+  return use.blobAt(0);
+}
+
+std::optional<std::string> Repository::shapes(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kShapes).use();
+  use.bind(":id", id);
+  if (!use.step()) return std::nullopt;
+  return use.textAt(0);
+}
+
+std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
+  auto done = std::make_shared<std::promise<std::int64_t>>();
+  auto future = done->get_future();
+  enqueue([run, done](Writer& w) {
+    std::int64_t id = 0;
+    try {
+      auto use = w.statement(sql::kInsertRun).use();
+      use.bindText(":name", run.name)
+          .bindText(":preset", run.preset)
+          .bindText(":scene", run.scene)
+          .bindText(":status", run.status)
+          .bind(":particles", run.particles)
+          .bind(":created_at", run.createdAt);
+      use.run();
+      id = w.db.lastInsertId();
+    } catch (...) {
+      done->set_exception(std::current_exception());
+      return;
+    }
+    w.afterCommit.push_back([done, id] { done->set_value(id); });
+  });
+  return future;
+}
+
+void Repository::markStarted(std::int64_t id, double startedAt) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kMarkStarted).use();
+    use.bind(":id", id).bind(":started_at", startedAt);
+    use.run();
+  });
+}
+
+void Repository::updateProgress(std::int64_t id, double progress, const std::string& stage,
+                                std::int64_t steps) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kUpdateProgress).use();
+    use.bind(":id", id).bind(":progress", progress).bindText(":stage", stage).bind(":steps", steps);
+    use.run();
+  });
+}
+
+void Repository::setShapes(std::int64_t id, int particles, std::string shapesJson) {
+  enqueue([=, json = std::move(shapesJson)](Writer& w) {
+    auto use = w.statement(sql::kSetShapes).use();
+    use.bind(":id", id).bind(":particles", particles).bindText(":shapes", json);
+    use.run();
+  });
+}
+
+void Repository::appendSample(std::int64_t id, SampleRecord sample) {
+  enqueue([id, s = std::move(sample)](Writer& w) {
+    auto use = w.statement(sql::kInsertSample).use();
+    use.bind(":id", id)
+        .bind(":seq", s.seq)
+        .bind(":step", s.step)
+        .bind(":time", s.time)
+        .bindText(":stage", s.stage)
+        .bindBlob(":vals", packValues(s.values));
+    use.run();
+  });
+}
+
+void Repository::appendHistogram(std::int64_t id, std::int64_t seq, std::int64_t step,
+                                 std::string json) {
+  enqueue([=, data = std::move(json)](Writer& w) {
+    auto use = w.statement(sql::kInsertHistogram).use();
+    use.bind(":id", id).bind(":seq", seq).bind(":step", step).bindText(":data", data);
+    use.run();
+  });
+}
+
+void Repository::appendFrame(std::int64_t id, std::int64_t seq, std::int64_t step, double time,
+                             std::string bytes) {
+  enqueue([=, data = std::move(bytes)](Writer& w) {
+    auto use = w.statement(sql::kInsertFrame).use();
+    use.bind(":id", id).bind(":seq", seq).bind(":step", step).bind(":time", time).bindBlob(
+        ":data", data);
+    use.run();
+  });
+}
+
+void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> afterCommit) {
+  enqueue([id, end = std::move(end), after = std::move(afterCommit)](Writer& w) mutable {
+    {
+      auto use = w.statement(sql::kFinishRun).use();
+      use.bind(":id", id)
+          .bindText(":status", end.status)
+          .bindText(":error", end.error)
+          .bindText(":stage", end.stage)
+          .bind(":finished_at", end.finishedAt)
+          .bind(":steps", end.steps)
+          .bind(":particles", end.particles);
+      bindOptional(use, ":wall_seconds", end.wallSeconds);
+      bindOptional(use, ":peak", end.peakPhiMobDeg);
+      use.run();
+    }
+    if (after) w.afterCommit.push_back(std::move(after));
+  });
+}
+
+std::future<bool> Repository::deleteRun(std::int64_t id) {
+  auto done = std::make_shared<std::promise<bool>>();
+  auto future = done->get_future();
+  enqueue([id, done](Writer& w) {
+    bool deleted = false;
+    try {
+      for (const char* text :
+           {sql::kDeleteSamples, sql::kDeleteHistograms, sql::kDeleteFrames, sql::kDeleteRun}) {
+        auto use = w.statement(text).use();
+        use.bind(":id", id);
+        use.run();
+        if (text == sql::kDeleteRun) deleted = w.db.changes() > 0;
+      }
+    } catch (...) {
+      done->set_exception(std::current_exception());
+      return;
+    }
+    w.afterCommit.push_back([done, deleted] { done->set_value(deleted); });
+  });
+  return future;
+}
+
+std::future<void> Repository::flush() {
+  auto done = std::make_shared<std::promise<void>>();
+  auto future = done->get_future();
+  enqueue([done](Writer& w) { w.afterCommit.push_back([done] { done->set_value(); }); });
+  return future;
+}
+
+}  // namespace grainlab::server

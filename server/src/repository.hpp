@@ -1,0 +1,102 @@
+#pragma once
+// The runs database. Reads happen on the caller's thread through a small pool of read-only
+// connections (WAL lets them run beside the writer); every write goes through ONE writer
+// thread, which commits whatever has queued up in one transaction. Writes are applied in the
+// order they were queued, so "the run finished" is never committed before its last sample.
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "run_record.hpp"
+
+namespace grainlab::server {
+
+class Database;
+
+/// How a run ended, as written once by finishRun().
+struct RunEnd {
+  std::string status;
+  std::string error;
+  std::string stage;
+  double finishedAt = 0;
+  std::optional<double> wallSeconds;
+  std::int64_t steps = 0;
+  int particles = 0;
+  std::optional<double> peakPhiMobDeg;
+};
+
+class Repository {
+ public:
+  /// Opens or creates the file (and its parent directory), applies the migrations and marks
+  /// every run that was queued or running as interrupted: no process is running it now.
+  explicit Repository(const std::string& path);
+  /// Commits what is queued, then closes.
+  ~Repository();
+  Repository(const Repository&) = delete;
+  Repository& operator=(const Repository&) = delete;
+
+  /// The schema version this code writes (PRAGMA user_version).
+  static int schemaVersion();
+
+  // ---- reads (any thread) ----
+  std::vector<RunRecord> listRuns();
+  std::optional<RunRecord> findRun(std::int64_t id);
+  std::vector<SampleRecord> samples(std::int64_t id);
+  /// Histogram messages' JSON in sample order; `latestOnly` keeps the last one.
+  std::vector<std::string> histograms(std::int64_t id, bool latestOnly);
+  std::vector<FrameInfo> frames(std::int64_t id);
+  /// The stored frame with this seq, or the last one at or before `step` when seq < 0.
+  std::optional<std::string> frame(std::int64_t id, std::int64_t seq, std::int64_t step);
+  std::optional<std::string> lastFrame(std::int64_t id);
+  std::optional<std::string> shapes(std::int64_t id);
+
+  // ---- writes (queued to the writer thread, applied in order) ----
+  /// Resolves to the new run's id (never reused) once it is committed; run.id is ignored.
+  std::future<std::int64_t> insertRun(const RunRecord& run);
+  void markStarted(std::int64_t id, double startedAt);
+  void updateProgress(std::int64_t id, double progress, const std::string& stage,
+                      std::int64_t steps);
+  void setShapes(std::int64_t id, int particles, std::string shapesJson);
+  void appendSample(std::int64_t id, SampleRecord sample);
+  void appendHistogram(std::int64_t id, std::int64_t seq, std::int64_t step, std::string json);
+  void appendFrame(std::int64_t id, std::int64_t seq, std::int64_t step, double time,
+                   std::string bytes);
+  /// `afterCommit` runs on the writer thread once the end is durable.
+  void finishRun(std::int64_t id, RunEnd end, std::function<void()> afterCommit);
+  /// Resolves to whether a run was deleted (with its series, histograms and frames).
+  std::future<bool> deleteRun(std::int64_t id);
+  /// Resolves once everything queued before it is committed.
+  std::future<void> flush();
+
+ private:
+  struct Writer;
+  struct Reader;
+  using Job = std::function<void(Writer&)>;
+
+  class ReaderLease;
+  ReaderLease lease();
+  void enqueue(Job job);
+  void writerLoop();
+
+  std::string path_;
+  std::unique_ptr<Writer> writer_;
+
+  std::mutex readersMutex_;
+  std::vector<std::unique_ptr<Reader>> idleReaders_;
+
+  std::mutex jobsMutex_;
+  std::condition_variable jobsReady_;
+  std::deque<Job> jobs_;
+  bool stopping_ = false;
+  std::thread writerThread_;
+};
+
+}  // namespace grainlab::server

@@ -1,0 +1,56 @@
+#pragma once
+// What the server keeps about a run: the row of the runs table and the stored sample rows.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grainlab::server {
+
+/// Run states as the API spells them.
+namespace status {
+inline constexpr const char* kQueued = "queued";
+inline constexpr const char* kRunning = "running";
+inline constexpr const char* kCompleted = "completed";
+inline constexpr const char* kFailed = "failed";
+inline constexpr const char* kCancelled = "cancelled";
+inline constexpr const char* kInterrupted = "interrupted";
+/// True for the states a run never leaves.
+bool isTerminal(const std::string& s);
+}  // namespace status
+
+struct RunRecord {
+  std::int64_t id = 0;
+  std::string name;
+  std::string preset;              ///< empty unless created from a preset
+  std::string scene;               ///< the scene JSON as submitted (or the preset's)
+  std::string status = status::kQueued;
+  std::string error;               ///< why it failed or was interrupted
+  std::string stage;               ///< the stage it is in (or ended in)
+  double progress = 0;             ///< 0..1
+  int particles = 0;               ///< estimated when queued, exact once started
+  std::int64_t steps = 0;
+  double createdAt = 0;            ///< Unix seconds
+  std::optional<double> startedAt, finishedAt;
+  std::optional<double> wallSeconds;    ///< the simulation's own wall time
+  std::optional<double> peakPhiMobDeg;
+};
+
+/// One row of the series as the engine produced it.
+struct SampleRecord {
+  std::int64_t seq = 0;            ///< 0, 1, 2... within the run
+  std::int64_t step = 0;
+  double time = 0;
+  std::string stage;
+  std::vector<double> values;      ///< as in grainlab::Sample::values
+};
+
+/// A stored replay frame without its bytes.
+struct FrameInfo {
+  std::int64_t seq = 0;            ///< 0, 1, 2... within the run
+  std::int64_t step = 0;
+  double time = 0;
+  std::int64_t bytes = 0;
+};
+
+}  // namespace grainlab::server

@@ -1,0 +1,482 @@
+#include "run_service.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <numeric>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/presets.hpp"
+#include "grainlab/scene.hpp"
+#include "api_types.hpp"
+#include "live_run.hpp"
+#include "outgoing.hpp"
+#include "repository.hpp"
+#include "stream_hub.hpp"
+#include "stream_observer.hpp"
+
+namespace grainlab::server {
+namespace {
+
+nlohmann::json orNull(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json timeOrNull(const std::optional<double>& v) {
+  return v ? nlohmann::json(isoTime(*v)) : nlohmann::json(nullptr);
+}
+
+std::string notFound(std::int64_t id) { return "no run " + std::to_string(id); }
+
+}  // namespace
+
+double unixNow() {
+  using namespace std::chrono;
+  return duration<double>(system_clock::now().time_since_epoch()).count();
+}
+
+std::string isoTime(double unixSeconds) {
+  const auto whole = static_cast<std::time_t>(std::floor(unixSeconds));
+  const int millis = std::clamp(static_cast<int>((unixSeconds - std::floor(unixSeconds)) * 1000), 0, 999);
+  std::tm tm{};
+  gmtime_r(&whole, &tm);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900,
+                tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, millis);
+  return buffer;
+}
+
+int estimateParticles(const Scene& scene) {
+  double count = static_cast<double>(scene.particles.size());
+  if (scene.assembly) {
+    const SpecimenRecipe& r = *scene.assembly;
+    double smallest = 0;  // the smallest particle size, m
+    if (r.shape == SpecimenRecipe::Shape::Disc) {
+      smallest = 2 * r.discRadius;
+    } else if (!r.longAxes.empty()) {
+      smallest = *std::min_element(r.longAxes.begin(), r.longAxes.end()) / std::max(r.aspectRatio, 1.0);
+    }
+    if (r.particleCount) {
+      count += *r.particleCount;
+    } else {
+      // Solid area of the specimen over a particle's mean area.
+      const double solid = kPi * r.specimenDiameter * r.specimenDiameter / 4 / (1 + r.targetVoidRatio);
+      double mean = 0;
+      if (r.shape == SpecimenRecipe::Shape::Disc) {
+        mean = discArea(r.discRadius);
+      } else if (!r.longAxes.empty()) {
+        // A regular n-gon inscribed in the ellipse L × L/aspect.
+        const int n = std::clamp(r.vertices, 3, kMaxPolygonVertices);
+        const double inscribed = n / (2 * kPi) * std::sin(2 * kPi / n);
+        for (double L : r.longAxes) mean += kPi / 4 * L * L / std::max(r.aspectRatio, 1.0) * inscribed;
+        mean /= static_cast<double>(r.longAxes.size());
+      }
+      if (mean > 0) count += solid / mean;
+    }
+    const double ring = r.boundaryRadius > 0 ? r.boundaryRadius : smallest / 2;
+    if (ring > 0) count += kPi * (r.specimenDiameter + 2 * ring) / (2 * ring);
+  }
+  return static_cast<int>(std::min(count, 2e9));
+}
+
+RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& options)
+    : repo_(repo),
+      hub_(hub),
+      options_(options),
+      run_(options.runFunction ? options.runFunction : RunFunction(&grainlab::runScene)),
+      manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
+      startedAt_(unixNow()) {}
+
+RunService::~RunService() { shutdown(); }
+
+std::int64_t RunService::create(const std::string& body) {
+  nlohmann::json request = nlohmann::json::parse(body, nullptr, false);
+  if (request.is_discarded())
+    throw ApiError(400, "the body is not valid JSON", "(json)");
+  if (!request.is_object())
+    throw ApiError(400, "expected a scene object or {\"preset\": NAME}", "(json)");
+
+  RunRecord record;
+  nlohmann::json sceneJson;
+  if (request.contains("preset")) {
+    if (request.size() != 1)
+      throw ApiError(400, "a preset request has the one key \"preset\"; send a whole scene to change it",
+                     "preset");
+    if (!request["preset"].is_string()) throw ApiError(400, "must be a preset name (a string)", "preset");
+    record.preset = request["preset"].get<std::string>();
+    try {
+      sceneJson = presetScene(record.preset);
+    } catch (const SceneError& e) {
+      throw ApiError(400, e.reason(), e.field());
+    }
+  } else {
+    sceneJson = std::move(request);
+  }
+
+  Scene scene;
+  try {
+    scene = parseScene(sceneJson);
+  } catch (const SceneError& e) {
+    throw ApiError(400, e.reason(), e.field());
+  } catch (const std::exception& e) {
+    // The parser promises SceneError; anything else still means the scene is bad.
+    throw ApiError(400, e.what(), "(json)");
+  }
+
+  const int particles = estimateParticles(scene);
+  if (particles > options_.maxParticles)
+    throw ApiError(503,
+                   "this server runs at most " + std::to_string(options_.maxParticles) +
+                       " particles per run; the scene has about " + std::to_string(particles),
+                   "particles");
+  if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
+      manager_.running() >= manager_.maxConcurrent())
+    throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
+                            " waiting); try again when a run has finished");
+
+  record.name = scene.name;
+  record.scene = sceneJson.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  record.status = status::kQueued;
+  record.particles = particles;
+  record.createdAt = unixNow();
+  const std::int64_t id = repo_.insertRun(record).get();
+
+  auto run = std::make_shared<LiveRun>(id);
+  run->update([&](LiveRun::State& s) { s.particles = particles; });
+  {
+    std::lock_guard lock(liveMutex_);
+    live_[id] = run;
+  }
+  hub_.open(id);
+  hub_.publish(id, makeOutgoing(statusMessage(id, status::kQueued, 0, {}, 0, {}), MessageKind::Status));
+  const auto submitted =
+      manager_.submit(id, [this, run, scene = std::move(scene)] { execute(run, scene); });
+  if (submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
+    // Lost a race for the last queue slot (or the server is stopping): take it back whole.
+    forget(id);
+    hub_.close(id);
+    repo_.deleteRun(id).get();
+    if (submitted == RunManager::Submit::ShuttingDown)
+      throw ApiError(503, "the server is shutting down");
+    throw ApiError(429, "the run queue is full; try again when a run has finished");
+  }
+  return id;
+}
+
+void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene) {
+  const std::int64_t id = run->id();
+  const double startedAt = unixNow();
+  run->update([&](LiveRun::State& s) {
+    s.status = status::kRunning;
+    s.startedAt = startedAt;
+  });
+  repo_.markStarted(id, startedAt);
+  hub_.publish(id, makeOutgoing(statusMessage(id, status::kRunning, 0, {}, 0, {}), MessageKind::Status));
+
+  StreamObserver::Settings settings;
+  settings.framesPerSecond = options_.framesPerSecond;
+  settings.replayFrameEvery = options_.replayFrameEvery;
+  StreamObserver observer(*run, repo_, hub_, format_, settings);
+
+  RunSummary summary;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (run->stopRequested()) {
+    summary.status = "cancelled";  // stopped between leaving the queue and starting
+  } else {
+    try {
+      summary = run_(scene, observer);
+    } catch (const std::exception& e) {
+      summary.status = "failed";
+      summary.error = e.what();
+    } catch (...) {
+      summary.status = "failed";
+      summary.error = "the simulation stopped with an unknown error";
+    }
+  }
+  // The server's own clock around the whole run, observers included: what streaming costs
+  // shows up here.
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  RunEnd end;
+  end.status = summary.status;
+  if (end.status != status::kCompleted && end.status != status::kFailed && end.status != status::kCancelled) {
+    end.error = "the engine reported status '" + end.status + "'";
+    end.status = status::kFailed;
+  }
+  if (!summary.error.empty()) end.error = summary.error;
+  if (end.status == status::kFailed && end.error.empty()) end.error = "the simulation failed";
+  const auto reason = run->stopReason();
+  if (end.status == status::kCancelled && reason == StopReason::Shutdown) {
+    end.status = status::kInterrupted;
+    end.error = "the server stopped before the run ended";
+  }
+  const auto state = run->state();
+  end.stage = state.stage;
+  end.finishedAt = unixNow();
+  end.wallSeconds = wall;
+  end.steps = summary.steps > 0 ? summary.steps : state.steps;
+  end.particles = summary.particles > 0 ? summary.particles : state.particles;
+  if (end.status == status::kCompleted || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
+
+  if (run->deleted()) {
+    // Queued after the run's last writes, so nothing of it is left behind.
+    repo_.deleteRun(id);
+    hub_.close(id);
+    forget(id);
+    return;
+  }
+  repo_.finishRun(id, end, [this, run, end] { published(run, end); });
+}
+
+void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& end) {
+  // Runs once the end is durable: whoever sees "completed" finds the whole series stored.
+  run->update([&](LiveRun::State& s) {
+    s.status = end.status;
+    if (end.status == status::kCompleted) s.progress = 1;
+  });
+  const auto s = run->state();
+  hub_.publish(run->id(), makeOutgoing(statusMessage(run->id(), end.status, s.progress, end.stage,
+                                                     end.steps, end.error),
+                                       MessageKind::Status));
+  hub_.close(run->id());
+  bool deleted;
+  {
+    std::lock_guard lock(liveMutex_);
+    live_.erase(run->id());
+    deleted = run->deleted();
+  }
+  // DELETE arrived while the end was being written.
+  if (deleted) repo_.deleteRun(run->id());
+}
+
+std::shared_ptr<LiveRun> RunService::live(std::int64_t id) {
+  std::lock_guard lock(liveMutex_);
+  auto it = live_.find(id);
+  return it == live_.end() ? nullptr : it->second;
+}
+
+void RunService::forget(std::int64_t id) {
+  std::lock_guard lock(liveMutex_);
+  live_.erase(id);
+}
+
+nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
+  RunRecord merged = r;
+  bool cancelRequested = false;
+  if (auto run = live(r.id)) {
+    const auto s = run->state();
+    // The database lags the live state by up to a second; a terminal state in the database
+    // (the commit already happened) wins.
+    if (!status::isTerminal(merged.status)) {
+      merged.status = s.status;
+      merged.progress = s.progress;
+      merged.stage = s.stage;
+      merged.steps = s.steps;
+      merged.particles = s.particles;
+      if (s.startedAt) merged.startedAt = s.startedAt;
+    }
+    cancelRequested = run->stopRequested();
+  }
+  nlohmann::json j = {
+      {"id", merged.id},
+      {"name", merged.name},
+      {"preset", merged.preset.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.preset)},
+      {"status", merged.status},
+      {"progress", merged.progress},
+      {"stage", merged.stage},
+      {"particles", merged.particles},
+      {"steps", merged.steps},
+      {"created_at", isoTime(merged.createdAt)},
+      {"started_at", timeOrNull(merged.startedAt)},
+      {"finished_at", timeOrNull(merged.finishedAt)},
+      {"queue_seconds", merged.startedAt ? nlohmann::json(*merged.startedAt - merged.createdAt)
+                                         : nlohmann::json(nullptr)},
+      {"wall_seconds", orNull(merged.wallSeconds)},
+      {"peak_phi_mob_deg", orNull(merged.peakPhiMobDeg)},
+      {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
+  };
+  if (cancelRequested) j["cancel_requested"] = true;
+  if (withScene) {
+    auto scene = nlohmann::json::parse(merged.scene, nullptr, false);
+    j["scene"] = scene.is_discarded() ? nlohmann::json(nullptr) : scene;
+  }
+  return j;
+}
+
+RunRecord RunService::require(std::int64_t id) {
+  auto run = live(id);
+  if (run && run->deleted()) throw ApiError(404, notFound(id));
+  auto record = repo_.findRun(id);
+  if (!record) throw ApiError(404, notFound(id));
+  return *record;
+}
+
+bool RunService::exists(std::int64_t id) {
+  try {
+    require(id);
+    return true;
+  } catch (const ApiError&) {
+    return false;
+  }
+}
+
+nlohmann::json RunService::list() {
+  nlohmann::json runs = nlohmann::json::array();
+  auto records = repo_.listRuns();
+  // Newest first: the run a person just started is at the top.
+  for (auto it = records.rbegin(); it != records.rend(); ++it) {
+    auto run = live(it->id);
+    if (run && run->deleted()) continue;
+    runs.push_back(runJson(*it, false));
+  }
+  return {{"runs", std::move(runs)}};
+}
+
+nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }
+
+nlohmann::json RunService::series(std::int64_t id) {
+  require(id);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& s : repo_.samples(id)) rows.push_back(format_.rowArray(s));
+  return {{"id", id}, {"columns", format_.columns()}, {"rows", std::move(rows)}};
+}
+
+std::string RunService::seriesCsv(std::int64_t id) {
+  require(id);
+  std::string csv = format_.csvHeader();
+  for (const auto& s : repo_.samples(id)) csv += format_.csvRow(s);
+  return csv;
+}
+
+std::string RunService::histograms(std::int64_t id, bool latestOnly) {
+  require(id);
+  // The stored messages are JSON already: splice them rather than parse and re-dump.
+  std::string out = "{\"id\":" + std::to_string(id) + ",\"histograms\":[";
+  bool first = true;
+  for (const auto& h : repo_.histograms(id, latestOnly)) {
+    if (!first) out += ',';
+    out += h;
+    first = false;
+  }
+  out += "]}";
+  return out;
+}
+
+nlohmann::json RunService::frameIndex(std::int64_t id) {
+  require(id);
+  nlohmann::json frames = nlohmann::json::array();
+  for (const auto& f : repo_.frames(id))
+    frames.push_back({{"index", f.seq}, {"step", f.step}, {"time", f.time}, {"bytes", f.bytes}});
+  return {{"id", id}, {"frames", std::move(frames)}};
+}
+
+std::string RunService::frame(std::int64_t id, std::int64_t index, std::int64_t step) {
+  require(id);
+  auto bytes = repo_.frame(id, index, step);
+  if (!bytes)
+    throw ApiError(404, index >= 0 ? "run " + std::to_string(id) + " has no frame " + std::to_string(index)
+                                   : "run " + std::to_string(id) + " has no frame at or before step " +
+                                         std::to_string(step));
+  return *bytes;
+}
+
+std::string RunService::shapes(std::int64_t id) {
+  require(id);
+  auto shapes = repo_.shapes(id);
+  if (!shapes) throw ApiError(404, "run " + std::to_string(id) + " has not built its particles yet");
+  return *shapes;
+}
+
+std::pair<int, nlohmann::json> RunService::cancel(std::int64_t id) {
+  auto record = require(id);
+  auto run = live(id);
+  if (!run) throw ApiError(409, "run " + std::to_string(id) + " has already ended (" + record.status + ")");
+  if (manager_.removeQueued(id)) {
+    run->requestStop(StopReason::Cancel);
+    RunEnd end;
+    end.status = status::kCancelled;
+    end.finishedAt = unixNow();
+    repo_.finishRun(id, end, [this, run, end] { published(run, end); });
+    repo_.flush().get();
+    return {200, get(id)};
+  }
+  run->requestStop(StopReason::Cancel);
+  return {202, get(id)};
+}
+
+void RunService::remove(std::int64_t id) {
+  require(id);
+  std::shared_ptr<LiveRun> run;
+  {
+    std::lock_guard lock(liveMutex_);
+    if (auto it = live_.find(id); it != live_.end()) {
+      run = it->second;
+      run->markDeleted();
+    }
+  }
+  if (run && !manager_.removeQueued(id)) return;  // running: whoever ends it deletes it
+  if (run) {
+    hub_.close(id);
+    forget(id);
+  }
+  repo_.deleteRun(id).get();
+}
+
+bool RunService::watch(std::int64_t id, const std::shared_ptr<StreamSink>& sink) {
+  if (!exists(id)) return false;
+  if (hub_.subscribe(id, sink)) return true;
+  // Ended: the hub closes a channel only after the end is committed, so the database has it all.
+  auto record = repo_.findRun(id);
+  if (!record) return false;
+  if (auto shapes = repo_.shapes(id)) sink->deliver(makeOutgoing(*shapes, MessageKind::Shapes));
+  sink->deliver(makeOutgoing(statusMessage(id, record->status, record->progress, record->stage,
+                                           record->steps, record->error),
+                             MessageKind::Status));
+  std::int64_t seq = 0;
+  for (const auto& s : repo_.samples(id)) {
+    nlohmann::json m = {{"type", "sample"}, {"seq", s.seq}, {"row", format_.rowObject(s)}};
+    sink->deliver(makeOutgoing(m.dump(), MessageKind::Sample));
+    ++seq;
+  }
+  auto latest = repo_.histograms(id, true);
+  if (!latest.empty()) sink->deliver(makeOutgoing(latest.front(), MessageKind::Histogram));
+  if (auto frame = repo_.lastFrame(id)) sink->deliver(makeOutgoing(*frame, MessageKind::Frame));
+  sink->finish();
+  return true;
+}
+
+nlohmann::json RunService::health() {
+  return {{"status", "ok"},
+          {"version", "0.1.0"},
+          {"schema_version", Repository::schemaVersion()},
+          {"uptime_seconds", unixNow() - startedAt_},
+          {"runs",
+           {{"running", manager_.running()},
+            {"queued", manager_.queued()},
+            {"max_concurrent", manager_.maxConcurrent()},
+            {"max_queued", options_.maxQueuedRuns}}},
+          {"watchers", hub_.subscribers()},
+          {"limits", {{"max_particles", options_.maxParticles}, {"max_body_bytes", options_.maxBodyBytes}}}};
+}
+
+void RunService::shutdown() {
+  {
+    std::lock_guard lock(liveMutex_);
+    if (stopped_) return;
+    stopped_ = true;
+    for (auto& [id, run] : live_) run->requestStop(StopReason::Shutdown);
+  }
+  for (const auto id : manager_.shutdown()) {
+    // Never started: the server is going away with it still in the queue.
+    RunEnd end;
+    end.status = status::kInterrupted;
+    end.error = "the server stopped before the run started";
+    end.finishedAt = unixNow();
+    if (auto run = live(id)) repo_.finishRun(id, end, [this, run, end] { published(run, end); });
+  }
+  // Every finish callback refers to this object: let them all run before it goes.
+  repo_.flush().get();
+}
+
+}  // namespace grainlab::server

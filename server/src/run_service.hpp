@@ -1,0 +1,90 @@
+#pragma once
+// The service layer between the routes and the storage: creates runs from scene JSON, runs
+// them through the RunManager with a StreamObserver each, answers questions about them by
+// merging the database with the live state, and attaches stream watchers. Refusals are thrown
+// as ApiError with the HTTP status they deserve.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "grainlab/server/serve.hpp"
+#include "run_manager.hpp"
+#include "series_format.hpp"
+
+namespace grainlab::server {
+
+class LiveRun;
+class Repository;
+class StreamHub;
+class StreamSink;
+struct RunRecord;
+struct RunEnd;
+
+class RunService {
+ public:
+  RunService(Repository& repo, StreamHub& hub, const ServeOptions& options);
+  /// Calls shutdown().
+  ~RunService();
+  RunService(const RunService&) = delete;
+  RunService& operator=(const RunService&) = delete;
+
+  /// A scene object or {"preset": NAME}; returns the new run's id. 400 for a bad scene (nothing
+  /// stored), 503 past the particle limit, 429 when the queue is full.
+  std::int64_t create(const std::string& body);
+  nlohmann::json list();
+  /// 404 for an unknown id.
+  nlohmann::json get(std::int64_t id);
+  nlohmann::json series(std::int64_t id);
+  std::string seriesCsv(std::int64_t id);
+  /// Stored histogram messages ({"id", "histograms": [...]}), or only the latest.
+  std::string histograms(std::int64_t id, bool latestOnly);
+  nlohmann::json frameIndex(std::int64_t id);
+  /// A stored frame by its index, or (index < 0) the last one at or before `step`.
+  std::string frame(std::int64_t id, std::int64_t index, std::int64_t step);
+  std::string shapes(std::int64_t id);
+  /// Returns the status code (200 cancelled now, 202 stop requested) and the run.
+  std::pair<int, nlohmann::json> cancel(std::int64_t id);
+  /// Deletes a run with everything stored for it; a live run is stopped first.
+  void remove(std::int64_t id);
+  bool exists(std::int64_t id);
+  /// Streams the run to the sink: live if it is queued or running, else what is stored
+  /// followed by finish(). False for an unknown id.
+  bool watch(std::int64_t id, const std::shared_ptr<StreamSink>& sink);
+  nlohmann::json health();
+  /// Stops every run (they end `interrupted`), waits for the workers and the database.
+  void shutdown();
+
+ private:
+  void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene);
+  /// After a run's end is committed: tell the watchers, drop the live state.
+  void published(const std::shared_ptr<LiveRun>& run, const RunEnd& end);
+  std::shared_ptr<LiveRun> live(std::int64_t id);
+  void forget(std::int64_t id);
+  nlohmann::json runJson(const RunRecord& record, bool withScene);
+  RunRecord require(std::int64_t id);
+
+  Repository& repo_;
+  StreamHub& hub_;
+  ServeOptions options_;
+  RunFunction run_;
+  SeriesFormat format_;
+  RunManager manager_;
+  std::mutex liveMutex_;
+  std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;
+  bool stopped_ = false;
+  double startedAt_;
+};
+
+/// Unix seconds now (wall clock).
+double unixNow();
+/// "2025-01-31T12:00:00.123Z".
+std::string isoTime(double unixSeconds);
+/// Particles the scene will have: explicit ones plus the generated specimen (its count if
+/// given, else estimated from its size and grading) and its boundary ring.
+int estimateParticles(const Scene& scene);
+
+}  // namespace grainlab::server

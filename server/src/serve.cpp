@@ -1,0 +1,65 @@
+#include "grainlab/server/serve.hpp"
+
+#include <boost/asio/signal_set.hpp>
+#include <csignal>
+#include <iostream>
+#include <thread>
+#include <vector>
+
+#include "application.hpp"
+#include "listener.hpp"
+
+namespace grainlab::server {
+
+int serve(const ServeOptions& options) {
+  beast::error_code ec;
+  const auto address = net::ip::make_address(options.host, ec);
+  if (ec) {
+    std::cerr << "grainlab serve: --host " << options.host << " is not an IP address\n";
+    return 2;
+  }
+  std::unique_ptr<Application> app;
+  try {
+    app = std::make_unique<Application>(options);
+  } catch (const std::exception& e) {
+    std::cerr << "grainlab serve: cannot open the database " << options.db << ": " << e.what() << "\n";
+    return 1;
+  }
+
+  const int threads = std::max(1, options.ioThreads);
+  // Declared after the application, so destroyed first: its pending handlers hold sessions
+  // that refer to the application.
+  net::io_context ioc(threads);
+  std::shared_ptr<Listener> listener;
+  try {
+    listener = std::make_shared<Listener>(ioc, tcp::endpoint(address, options.port), *app);
+  } catch (const boost::system::system_error& e) {
+    std::cerr << "grainlab serve: cannot listen on " << options.host << ":" << options.port << ": "
+              << e.code().message() << "\n";
+    return 1;
+  }
+  listener->run();
+
+  net::signal_set signals(ioc, SIGINT, SIGTERM);
+  signals.async_wait([&](const beast::error_code& error, int signal) {
+    if (error) return;
+    std::cerr << "grainlab serve: " << (signal == SIGINT ? "SIGINT" : "SIGTERM") << ", stopping\n";
+    listener->stop();
+    ioc.stop();
+  });
+
+  std::cerr << "grainlab serve: listening on http://" << options.host << ":" << listener->port()
+            << " (database " << options.db << ", web root " << options.webRoot << ")" << std::endl;
+
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back([&ioc] { ioc.run(); });
+  ioc.run();
+  for (auto& t : pool) t.join();
+
+  // Runs still going end `interrupted`; the database gets everything before we return.
+  app->shutdown();
+  std::cerr << "grainlab serve: stopped" << std::endl;
+  return 0;
+}
+
+}  // namespace grainlab::server

@@ -1,0 +1,86 @@
+#include "stream_hub.hpp"
+
+#include <algorithm>
+
+namespace grainlab::server {
+
+void StreamHub::open(std::int64_t runId) {
+  std::lock_guard lock(mutex_);
+  channels_.try_emplace(runId);
+}
+
+void StreamHub::publish(std::int64_t runId, const Outgoing& message) {
+  std::lock_guard lock(mutex_);
+  auto it = channels_.find(runId);
+  if (it == channels_.end()) return;
+  Channel& ch = it->second;
+  switch (message.kind) {
+    case MessageKind::Shapes: ch.shapes = message; break;
+    case MessageKind::Status:
+    case MessageKind::Progress: ch.status = message; break;
+    case MessageKind::Sample: ch.samples.push_back(message); break;
+    case MessageKind::Histogram: ch.histogram = message; break;
+    case MessageKind::Frame: ch.frame = message; break;
+  }
+  // Delivering under the lock keeps every sink's order the same as the publish order, and a
+  // subscriber's snapshot exactly before its first live message.
+  std::erase_if(ch.sinks, [&](const std::weak_ptr<StreamSink>& weak) {
+    auto sink = weak.lock();
+    if (!sink) return true;
+    sink->deliver(message);
+    return false;
+  });
+}
+
+bool StreamHub::subscribe(std::int64_t runId, const std::shared_ptr<StreamSink>& sink) {
+  std::lock_guard lock(mutex_);
+  auto it = channels_.find(runId);
+  if (it == channels_.end()) return false;
+  Channel& ch = it->second;
+  // A late joiner starts from the current state.
+  if (ch.shapes.data) sink->deliver(ch.shapes);
+  if (ch.status.data) sink->deliver(ch.status);
+  for (const auto& sample : ch.samples) sink->deliver(sample);
+  if (ch.histogram.data) sink->deliver(ch.histogram);
+  if (ch.frame.data) sink->deliver(ch.frame);
+  ch.sinks.push_back(sink);
+  return true;
+}
+
+void StreamHub::unsubscribe(std::int64_t runId, const StreamSink* sink) {
+  std::lock_guard lock(mutex_);
+  auto it = channels_.find(runId);
+  if (it == channels_.end()) return;
+  std::erase_if(it->second.sinks, [sink](const std::weak_ptr<StreamSink>& weak) {
+    auto s = weak.lock();
+    return !s || s.get() == sink;
+  });
+}
+
+void StreamHub::close(std::int64_t runId) {
+  std::vector<std::weak_ptr<StreamSink>> sinks;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = channels_.find(runId);
+    if (it == channels_.end()) return;
+    sinks = std::move(it->second.sinks);
+    channels_.erase(it);
+  }
+  for (auto& weak : sinks)
+    if (auto sink = weak.lock()) sink->finish();
+}
+
+std::size_t StreamHub::subscribers(std::int64_t runId) const {
+  std::lock_guard lock(mutex_);
+  auto it = channels_.find(runId);
+  return it == channels_.end() ? 0 : it->second.sinks.size();
+}
+
+std::size_t StreamHub::subscribers() const {
+  std::lock_guard lock(mutex_);
+  std::size_t n = 0;
+  for (const auto& [id, ch] : channels_) n += ch.sinks.size();
+  return n;
+}
+
+}  // namespace grainlab::server

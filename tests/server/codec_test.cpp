@@ -1,0 +1,92 @@
+// Frames, shapes, series rows and paths: the formats clients decode.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "frame_codec.hpp"
+#include "grainlab/output_writer.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/world.hpp"
+#include "series_format.hpp"
+#include "static_files.hpp"
+
+namespace grainlab::server {
+namespace {
+
+TEST(FrameCodec, EncodesParticlesAndCompressedContacts) {
+  World world(Material{});
+  ParticleSpec p;
+  p.radius = 0.002;
+  world.addParticle(p);
+  p.position = Vec2(0.0039, 0);  // overlapping the first: one contact in compression
+  world.addParticle(p);
+  ParticleSpec poly;
+  poly.shape = ShapeKind::Polygon;
+  poly.vertices = {Vec2(0, 0), Vec2(0.002, 0), Vec2(0.001, 0.002)};
+  poly.position = Vec2(0.02, 0.02);
+  world.addParticle(poly);
+  world.step();
+
+  std::vector<ContactRecord> scratch;
+  const auto bytes = encodeFrame(world, scratch);
+  ASSERT_EQ(bytes.size(), frame::kHeaderBytes + 3 * frame::kParticleBytes + 1 * frame::kContactBytes);
+  const auto f = decodeFrame(bytes);
+  EXPECT_EQ(f.step, 1);
+  EXPECT_DOUBLE_EQ(f.time, world.time());
+  ASSERT_EQ(f.particles.size(), 12u);
+  EXPECT_FLOAT_EQ(f.particles[4], static_cast<float>(world.positions()[1].x()));
+  ASSERT_EQ(f.pairs, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_GT(f.forces[0], 0);
+  EXPECT_FLOAT_EQ(f.maxContactForce, f.forces[0]);
+  EXPECT_GT(f.particles[3], 0);   // particle 0 feels the contact
+  EXPECT_EQ(f.particles[11], 0);  // the polygon touches nothing
+
+  auto shapes = shapesMessage(world);
+  EXPECT_EQ(shapes["type"], "shapes");
+  EXPECT_EQ(shapes["count"], 3);
+  EXPECT_DOUBLE_EQ(shapes["shapes"][0]["disc"].get<double>(), 0.002);
+  EXPECT_EQ(shapes["shapes"][2]["polygon"].size(), 6u);
+
+  EXPECT_THROW(decodeFrame("nope"), std::invalid_argument);
+  EXPECT_THROW(decodeFrame(bytes.substr(0, bytes.size() - 1)), std::invalid_argument);
+}
+
+TEST(SeriesFormat, CsvIsTheClisAndJsonHasNullForNotMeasured) {
+  SeriesFormat format;
+  SampleRecord s;
+  s.step = 120;
+  s.time = 0.25;
+  s.stage = "shearing";
+  const auto& columns = seriesColumns();
+  for (std::size_t c = 0; c < columns.size(); ++c) s.values.push_back(c == 5 ? NAN : 0.1 * c);
+  s.values[0] = 120;
+  s.values[1] = 0.25;
+  Sample engine;
+  engine.step = s.step;
+  engine.time = s.time;
+  engine.stage = s.stage;
+  engine.values = s.values;
+  EXPECT_EQ(format.csvRow(s), formatSeriesRow(engine) + "\n");
+  EXPECT_EQ(format.csvHeader(), seriesHeader() + "\n");
+  const auto row = format.rowObject(s);
+  EXPECT_EQ(row["step"], 120);
+  EXPECT_EQ(row["stage"], "shearing");
+  EXPECT_TRUE(row[columns[5]].is_null());
+  EXPECT_DOUBLE_EQ(row[columns[6]].get<double>(), 0.6000000000000001);
+  EXPECT_EQ(format.rowArray(s).size(), columns.size());
+}
+
+TEST(StaticFiles, PercentDecodingAndTypes) {
+  EXPECT_EQ(*percentDecode("/a%20b%2Fc"), "/a b/c");
+  EXPECT_FALSE(percentDecode("/%2"));
+  EXPECT_FALSE(percentDecode("/%g0"));
+  EXPECT_FALSE(percentDecode("/%00"));
+  EXPECT_EQ(mimeType("a/b/index.HTML"), "text/html; charset=utf-8");
+  EXPECT_EQ(mimeType("x.mjs"), "text/javascript; charset=utf-8");
+  EXPECT_EQ(mimeType("x.svg"), "image/svg+xml");
+  EXPECT_EQ(mimeType("x.wasm"), "application/wasm");
+  EXPECT_EQ(mimeType("Makefile"), "application/octet-stream");
+}
+
+}  // namespace
+}  // namespace grainlab::server

@@ -1,0 +1,148 @@
+#include "repository.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "sqlite.hpp"
+
+namespace grainlab::server {
+namespace {
+
+std::string freshDb(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("grainlab-repo-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto path = dir / (name + ".db");
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
+  return path.string();
+}
+
+RunRecord queued(const std::string& name) {
+  RunRecord r;
+  r.name = name;
+  r.scene = R"({"name":")" + name + R"("})";
+  r.createdAt = 1700000000.5;
+  r.particles = 3;
+  return r;
+}
+
+TEST(Repository, MigratesToTheCurrentSchemaInWalMode) {
+  const auto path = freshDb("schema");
+  { Repository repo(path); }
+  Database db(path, false);
+  EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
+  Statement mode(db, "PRAGMA journal_mode");
+  auto use = mode.use();
+  ASSERT_TRUE(use.step());
+  EXPECT_EQ(use.textAt(0), "wal");
+}
+
+TEST(Repository, CreatesTheParentDirectory) {
+  const auto dir = std::filesystem::path(freshDb("x")).parent_path() / "nested" / "deeper";
+  std::filesystem::remove_all(dir.parent_path());
+  Repository repo((dir / "g.db").string());
+  EXPECT_TRUE(std::filesystem::exists(dir / "g.db"));
+}
+
+TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
+  Repository repo(freshDb("store"));
+  const auto a = repo.insertRun(queued("a")).get();
+  const auto b = repo.insertRun(queued("b")).get();
+  EXPECT_LT(a, b);
+  repo.markStarted(a, 1700000001.0);
+  repo.appendSample(a, {0, 10, 0.5, "free", {1.0, 2.5, std::nan("")}});
+  repo.appendSample(a, {1, 20, 1.0, "free", {3.0, 4.5, 6.0}});
+  repo.appendHistogram(a, 1, 20, R"({"type":"histogram"})");
+  repo.appendFrame(a, 0, 20, 1.0, std::string("\x01\x00\x02", 3));
+  repo.setShapes(a, 3, R"({"type":"shapes"})");
+  RunEnd end;
+  end.status = "completed";
+  end.finishedAt = 1700000002.0;
+  end.wallSeconds = 0.75;
+  end.steps = 20;
+  end.particles = 3;
+  bool published = false;
+  repo.finishRun(a, end, [&] { published = true; });
+  repo.flush().get();
+  EXPECT_TRUE(published);
+
+  auto run = repo.findRun(a);
+  ASSERT_TRUE(run);
+  EXPECT_EQ(run->status, "completed");
+  EXPECT_DOUBLE_EQ(run->progress, 1.0);
+  EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
+  EXPECT_DOUBLE_EQ(*run->startedAt, 1700000001.0);
+  EXPECT_EQ(run->scene, R"({"name":"a"})");
+
+  auto samples = repo.samples(a);
+  ASSERT_EQ(samples.size(), 2u);
+  EXPECT_EQ(samples[1].step, 20);
+  EXPECT_EQ(samples[1].values, (std::vector<double>{3.0, 4.5, 6.0}));
+  EXPECT_TRUE(std::isnan(samples[0].values[2]));
+  EXPECT_EQ(repo.histograms(a, true).size(), 1u);
+  EXPECT_EQ(*repo.frame(a, 0, 0), std::string("\x01\x00\x02", 3));
+  EXPECT_EQ(*repo.frame(a, -1, 25), std::string("\x01\x00\x02", 3));
+  EXPECT_FALSE(repo.frame(a, -1, 5));
+  EXPECT_EQ(*repo.shapes(a), R"({"type":"shapes"})");
+  EXPECT_EQ(repo.listRuns().size(), 2u);
+
+  EXPECT_TRUE(repo.deleteRun(a).get());
+  EXPECT_FALSE(repo.deleteRun(a).get());
+  EXPECT_FALSE(repo.findRun(a));
+  EXPECT_TRUE(repo.samples(a).empty());
+  EXPECT_TRUE(repo.frames(a).empty());
+}
+
+TEST(Repository, ReopeningMarksUnfinishedRunsInterruptedAndKeepsTheirSeries) {
+  const auto path = freshDb("reopen");
+  std::int64_t running = 0, queuedId = 0, done = 0;
+  {
+    Repository repo(path);
+    running = repo.insertRun(queued("running")).get();
+    queuedId = repo.insertRun(queued("queued")).get();
+    done = repo.insertRun(queued("done")).get();
+    repo.markStarted(running, 1.0);
+    repo.appendSample(running, {0, 1, 0.1, "free", {1.0}});
+    RunEnd end;
+    end.status = "completed";
+    repo.finishRun(done, end, nullptr);
+  }
+  Repository repo(path);
+  EXPECT_EQ(repo.findRun(running)->status, "interrupted");
+  EXPECT_FALSE(repo.findRun(running)->error.empty());
+  EXPECT_EQ(repo.findRun(queuedId)->status, "interrupted");
+  EXPECT_EQ(repo.findRun(done)->status, "completed");
+  EXPECT_EQ(repo.samples(running).size(), 1u);
+  // Ids are never reused, even after the newest run is deleted.
+  EXPECT_TRUE(repo.deleteRun(done).get());
+  EXPECT_GT(repo.insertRun(queued("next")).get(), done);
+}
+
+TEST(Repository, ReadsBetweenWritesLeaveNoStatementOpen) {
+  // An un-reset read statement would keep a read transaction and fail the writer's COMMIT.
+  Repository repo(freshDb("reset"));
+  const auto id = repo.insertRun(queued("r")).get();
+  for (int i = 0; i < 50; ++i) {
+    repo.appendSample(id, {i, i, 0.1 * i, "free", {double(i)}});
+    (void)repo.listRuns();
+    (void)repo.samples(id);
+    (void)repo.findRun(id);
+  }
+  repo.flush().get();
+  EXPECT_EQ(repo.samples(id).size(), 50u);
+}
+
+TEST(Repository, RefusesADatabaseFromANewerProgram) {
+  const auto path = freshDb("newer");
+  {
+    Database db(path, true);
+    db.exec("PRAGMA user_version = 999");
+  }
+  EXPECT_THROW(Repository repo(path), SqliteError);
+}
+
+}  // namespace
+}  // namespace grainlab::server

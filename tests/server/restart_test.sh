@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Durability: a clean restart keeps every run with its series; a server killed with -9 in the
+# middle of a run comes back with that run `interrupted` (and the one queued behind it), and
+# everything it had stored before the kill intact.
+source "$(dirname "$0")/lib.sh"
+
+DB=$TMP_ROOT/data/restart.db
+start_server "$TMP_ROOT/1.log" "$DB" --max-concurrent 1
+
+req POST /api/runs --data "$TINY_SCENE"
+DONE=$(json b.id)
+check "a run completes" wait_status "$DONE" completed 60
+req POST /api/runs --data "$LONG_SCENE"
+CANCELLED=$(json b.id)
+check "a second run starts" wait_status "$CANCELLED" running 30
+req POST "/api/runs/$CANCELLED/cancel"
+check "and is cancelled" wait_status "$CANCELLED" cancelled 30
+req GET /api/runs
+LIST_BEFORE=$(json 'JSON.stringify(b.runs.map(r => [r.id, r.status, r.name, r.created_at, r.finished_at, r.wall_seconds]))')
+req GET "/api/runs/$DONE/series?format=csv"
+CSV_BEFORE=$BODY
+req GET "/api/runs/$DONE/frames"
+FRAMES_BEFORE=$BODY
+
+stop_server TERM
+check "clean stop" test $? -eq 0
+start_server "$TMP_ROOT/2.log" "$DB" --max-concurrent 1
+req GET /api/runs
+check "after a restart the list is the same" test "$(json 'JSON.stringify(b.runs.map(r => [r.id, r.status, r.name, r.created_at, r.finished_at, r.wall_seconds]))')" = "$LIST_BEFORE"
+req GET "/api/runs/$DONE/series?format=csv"
+check "and the series is the same" test "$BODY" = "$CSV_BEFORE"
+req GET "/api/runs/$DONE/frames"
+check "and the replay frames" test "$BODY" = "$FRAMES_BEFORE"
+
+# kill -9 in the middle of a run, with another queued behind it.
+req POST /api/runs --data "$LONG_SCENE"
+RUNNING=$(json b.id)
+req POST /api/runs --data "$TINY_SCENE"
+QUEUED=$(json b.id)
+check "long run running" wait_status "$RUNNING" running 30
+for _ in $(seq 100); do
+  req GET "/api/runs/$RUNNING/series?format=csv"
+  (($(wc -l <<<"$BODY") >= 6)) && break
+  sleep 0.1
+done
+SERIES_AT_KILL=$BODY
+ROWS_AT_KILL=$(($(wc -l <<<"$BODY") - 1))
+check "it has stored rows ($ROWS_AT_KILL)" test "$ROWS_AT_KILL" -ge 5
+stop_server KILL
+
+start_server "$TMP_ROOT/3.log" "$DB" --max-concurrent 1
+req GET "/api/runs/$RUNNING"
+expect "the killed run is interrupted" 200 '"status":"interrupted"'
+expect "with a reason" 200 '"error":"the server stopped before the run ended"'
+req GET "/api/runs/$QUEUED"
+expect "the queued run too" 200 '"status":"interrupted"'
+req GET "/api/runs/$RUNNING/series?format=csv"
+check "its series up to the kill is intact" test "${BODY:0:${#SERIES_AT_KILL}}" = "$SERIES_AT_KILL"
+req GET "/api/runs/$DONE"
+expect "the earlier runs are untouched" 200 '"status":"completed"'
+req GET /api/health
+expect "nothing is left running" 200 '"queued":0,"running":0'
+
+# SIGTERM during a run: it stops the run, which ends interrupted.
+req POST /api/runs --data "$LONG_SCENE"
+STOPPED=$(json b.id)
+check "another long run" wait_status "$STOPPED" running 30
+stop_server TERM
+check "SIGTERM with a run going exits 0" test $? -eq 0
+start_server "$TMP_ROOT/4.log" "$DB"
+req GET "/api/runs/$STOPPED"
+expect "a run stopped by SIGTERM is interrupted" 200 '"status":"interrupted"'
+stop_server TERM
+
+finish
