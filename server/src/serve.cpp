@@ -8,6 +8,7 @@
 
 #include "application.hpp"
 #include "listener.hpp"
+#include "stream_hub.hpp"
 
 namespace grainlab::server {
 
@@ -39,6 +40,10 @@ int serve(const ServeOptions& options) {
     return 1;
   }
   listener->run();
+  // Stream fan-out runs on the I/O threads, in order (one strand), not on the simulation's.
+  app->hub().setDispatcher([fanout = net::make_strand(ioc)](std::function<void()> job) {
+    net::post(fanout, std::move(job));
+  });
 
   net::signal_set signals(ioc, SIGINT, SIGTERM);
   signals.async_wait([&](const beast::error_code& error, int signal) {

@@ -4,6 +4,11 @@
 
 namespace grainlab::server {
 
+void StreamHub::setDispatcher(Dispatcher dispatcher) {
+  std::lock_guard lock(mutex_);
+  dispatch_ = std::move(dispatcher);
+}
+
 void StreamHub::open(std::int64_t runId) {
   std::lock_guard lock(mutex_);
   channels_.try_emplace(runId);
@@ -22,13 +27,13 @@ void StreamHub::publish(std::int64_t runId, const Outgoing& message) {
     case MessageKind::Histogram: ch.histogram = message; break;
     case MessageKind::Frame: ch.frame = message; break;
   }
-  // Delivering under the lock keeps every sink's order the same as the publish order, and a
-  // subscriber's snapshot exactly before its first live message.
-  std::erase_if(ch.sinks, [&](const std::weak_ptr<StreamSink>& weak) {
-    auto sink = weak.lock();
-    if (!sink) return true;
-    sink->deliver(message);
-    return false;
+  std::erase_if(ch.sinks, [](const std::weak_ptr<StreamSink>& weak) { return weak.expired(); });
+  if (ch.sinks.empty()) return;
+  // Dispatched under the lock with the watchers of this moment: every sink sees messages in
+  // publish order, and one that subscribes later has this message in its snapshot instead.
+  dispatch_([sinks = ch.sinks, message] {
+    for (const auto& weak : sinks)
+      if (auto sink = weak.lock()) sink->deliver(message);
   });
 }
 
@@ -58,16 +63,15 @@ void StreamHub::unsubscribe(std::int64_t runId, const StreamSink* sink) {
 }
 
 void StreamHub::close(std::int64_t runId) {
-  std::vector<std::weak_ptr<StreamSink>> sinks;
-  {
-    std::lock_guard lock(mutex_);
-    auto it = channels_.find(runId);
-    if (it == channels_.end()) return;
-    sinks = std::move(it->second.sinks);
-    channels_.erase(it);
-  }
-  for (auto& weak : sinks)
-    if (auto sink = weak.lock()) sink->finish();
+  std::lock_guard lock(mutex_);
+  auto it = channels_.find(runId);
+  if (it == channels_.end()) return;
+  // After the fan-out of everything published before: finish() comes after the last status.
+  dispatch_([sinks = std::move(it->second.sinks)] {
+    for (const auto& weak : sinks)
+      if (auto sink = weak.lock()) sink->finish();
+  });
+  channels_.erase(it);
 }
 
 std::size_t StreamHub::subscribers(std::int64_t runId) const {

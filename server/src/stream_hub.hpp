@@ -5,6 +5,7 @@
 // same immutable buffer to every subscriber. Subscribers only queue, so publish never waits
 // on a network.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -26,6 +27,12 @@ class StreamSink {
 
 class StreamHub {
  public:
+  /// Runs a fan-out job somewhere, in the order given. The default runs it at once on the
+  /// publishing thread; the server posts it to one strand of its I/O threads, so the
+  /// simulation thread pays one post per message however many clients watch.
+  using Dispatcher = std::function<void(std::function<void()>)>;
+  void setDispatcher(Dispatcher dispatcher);
+
   /// Starts a channel for a run that will produce messages.
   void open(std::int64_t runId);
   /// Records the message for late joiners and delivers it to the run's subscribers.
@@ -49,6 +56,7 @@ class StreamHub {
 
   mutable std::mutex mutex_;
   std::map<std::int64_t, Channel> channels_;
+  Dispatcher dispatch_ = [](std::function<void()> job) { job(); };
 };
 
 }  // namespace grainlab::server

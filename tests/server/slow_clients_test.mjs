@@ -1,0 +1,59 @@
+// 50 WebSocket clients watching one run, one of which never reads: the run must finish no
+// more than 10% slower than with nobody watching (median server-side wall time of a few runs
+// each, alternated in one session), and the 49 readers must see it to the end.
+import { check, finish, getJson, postJson, startServer, waitFor, watch } from './harness.mjs';
+
+const PRESET = process.env.GRAINLAB_STREAM_PRESET ?? 'circular-quick';
+const REPEATS = Number(process.env.GRAINLAB_SLOW_REPEATS ?? 5);
+const CLIENTS = Number(process.env.GRAINLAB_SLOW_CLIENTS ?? 50);
+const LIMIT = Number(process.env.GRAINLAB_SLOW_LIMIT ?? 1.10);
+
+const median = (xs) => { const s = [...xs].sort((a, b) => a - b); const m = s.length >> 1; return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2; };
+
+import { setPriority } from 'node:os';
+
+const server = await startServer(['--max-concurrent', '1']);
+// The 50 clients stand for people on other machines: their parsing is not the server's cost,
+// so this process yields the CPU to the server (which keeps its normal priority).
+setPriority(19);
+try {
+  async function oneRun(clients) {
+    const id = (await postJson(`${server.base}/api/runs`, { preset: PRESET })).body.id;
+    const watchers = [];
+    for (let k = 0; k < clients; k++) watchers.push(watch(server.wsBase, id, { paused: k === 0, light: true }));
+    const run = await waitFor(server.base, id, 'completed', 300);
+    const readers = await Promise.all(watchers.slice(1).map((w) => w.done));
+    for (const w of watchers.slice(0, 1)) w.ws.terminate();
+    return { wall: run.wall_seconds, readers };
+  }
+
+  await oneRun(0);  // warm-up: page cache, allocator, CPU frequency
+  const base = [];
+  const loaded = [];
+  let readersOk = true;
+  let frames = 0;
+  for (let r = 0; r < REPEATS; r++) {
+    base.push((await oneRun(0)).wall);
+    const run = await oneRun(CLIENTS);
+    loaded.push(run.wall);
+    readersOk &&= run.readers.every((g) => g.status.at(-1)?.status === 'completed' && g.frames.length > 0 && g.closeCode === 1000);
+    frames += run.readers.reduce((n, g) => n + g.frames.length, 0) / run.readers.length;
+  }
+  const mb = median(base);
+  const ml = median(loaded);
+  const ratio = ml / mb;
+  console.log(`# wall seconds, nobody watching: ${base.map((x) => x.toFixed(3)).join(' ')} (median ${mb.toFixed(3)})`);
+  console.log(`# wall seconds, ${CLIENTS} watching (1 never reading): ${loaded.map((x) => x.toFixed(3)).join(' ')} (median ${ml.toFixed(3)})`);
+  console.log(`# slowdown ${((ratio - 1) * 100).toFixed(1)}%; ${(frames / REPEATS).toFixed(0)} frames per reader per run`);
+  check(`${CLIENTS - 1} reading clients each saw every run to 'completed' with frames`, readersOk);
+  check(`run with ${CLIENTS} watchers no more than ${((LIMIT - 1) * 100).toFixed(0)}% slower (median ${ml.toFixed(3)} s vs ${mb.toFixed(3)} s)`,
+        ratio <= LIMIT);
+  const health = await getJson(`${server.base}/api/health`);
+  check('server healthy afterwards with no watcher left', health.status === 'ok' && health.watchers === 0, JSON.stringify(health));
+} catch (e) {
+  check('slow-client test ran', false, e.stack);
+} finally {
+  const code = await server.stop('SIGTERM');
+  check('server stops cleanly with a stalled client connected', code === 0, `exit ${code}`);
+  finish();
+}
