@@ -14,6 +14,7 @@ namespace {
 struct Result {
   std::string name;
   int particles = 0;
+  double coordination = 0;  // contacts per particle (×2) when timing starts
   std::vector<double> rates;  // particle-steps per second, one per repeat
 };
 
@@ -27,7 +28,9 @@ Result measure(const Scene& scene, int steps, int repeats) {
   const int settleSteps = static_cast<int>(scene.stages.front().duration / world.timestep());
   for (int k = 0; k < settleSteps; ++k) world.step();
   world.checkHealth();
-  Result r{scene.name, world.size(), {}};
+  std::vector<ContactRecord> contacts;
+  world.contacts(contacts);
+  Result r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}};
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < steps; ++k) world.step();
@@ -62,10 +65,12 @@ int benchCommand(const std::vector<std::string>& args) {
     std::cerr << "bench: " << scene.name << " settling, then " << repeats << " x " << steps << " steps\n";
     results.push_back(measure(scene, steps, repeats));
   }
-  std::cout << std::left << std::setw(16) << "scene" << std::setw(11) << "particles" << "median particle-steps/s"
+  std::cout << std::left << std::setw(16) << "scene" << std::setw(11) << "particles" << std::setw(14)
+            << "coordination" << "median particle-steps/s"
             << "   (min .. max)\n";
   for (const Result& r : results) {
-    std::cout << std::setw(16) << r.name << std::setw(11) << r.particles << std::setprecision(4) << median(r.rates) / 1e6
+    std::cout << std::setw(16) << r.name << std::setw(11) << r.particles << std::setw(14) << std::setprecision(3)
+              << r.coordination << std::setprecision(4) << median(r.rates) / 1e6
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }

@@ -19,8 +19,7 @@ ContactGeometry reduceManifold(const Vec2& normal, const ManifoldPoints& m) {
   return g;
 }
 
-ContactGeometry collidePolygonWall(const Polygon& poly, const Vec2& x, double angle, const Wall& wall) {
-  const double c = std::cos(angle), s = std::sin(angle);
+ContactGeometry collidePolygonWall(const Polygon& poly, const Vec2& x, double c, double s, const Wall& wall) {
   ManifoldPoints m;
   for (int k = 0; k < poly.count; ++k) {
     const Vec2& v = poly.vertices[k];

@@ -47,7 +47,8 @@ inline ContactGeometry collideDiscWall(const Vec2& x, double r, const Wall& wall
   return g;
 }
 
-/// Polygon (body frame `poly`, pose x, angle) against a half-plane: the deepest two vertices.
-ContactGeometry collidePolygonWall(const Polygon& poly, const Vec2& x, double angle, const Wall& wall);
+/// Polygon (body frame `poly`, centre x, rotation cos c and sin s) against a half-plane: the
+/// deepest two vertices.
+ContactGeometry collidePolygonWall(const Polygon& poly, const Vec2& x, double c, double s, const Wall& wall);
 
 }  // namespace grainlab

@@ -78,7 +78,7 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     if (iMoves) {
       for (int w = static_cast<int>(walls.size()) - 1; w >= 0; --w) {
         const double s = (positions[i] - walls[w].point).dot(walls[w].normal);
-        if (s < boundingRadii[i] + skin) pairs_.push_back({i, -1 - w});
+        if (s < boundingRadii[i] + skin) pairs_.push_back({i, -1 - w, -1});
       }
     }
     candidates_.clear();
@@ -98,7 +98,7 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
       }
     }
     std::sort(candidates_.begin(), candidates_.end());
-    for (int j : candidates_) pairs_.push_back({i, j});
+    for (int j : candidates_) pairs_.push_back({i, j, -1});
   }
 
   // Carry contact history over: both lists are sorted by (i, j).
@@ -111,6 +111,7 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
       p.fn = previous_[o].fn;
       p.ft = previous_[o].ft;
       p.overlap = previous_[o].overlap;
+      p.axis = previous_[o].axis;
     }
   }
   valid_ = true;

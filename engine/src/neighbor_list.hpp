@@ -16,6 +16,7 @@ namespace grainlab {
 struct PairState {
   int i = 0;
   int j = 0;                 ///< particle index, or -1 - wall index
+  int axis = -1;             ///< polygon pairs: a cached separating axis (PolygonCollider)
   double dampN = 0;          ///< normal viscous coefficient, N·s/m
   double dampT = 0;          ///< tangential viscous coefficient, N·s/m
   double history = 0;        ///< tangential spring elongation, m (0 when not touching)

@@ -16,25 +16,41 @@
 
 namespace grainlab {
 
+/// Where a body is: centre and the cosine and sine of its angle (computed once per step).
+struct Pose {
+  Vec2 x;
+  double c, s;
+};
+
 class PolygonCollider {
  public:
   /// `lengthScale` (1/m) maps metres to Box2D units: choose it so particles are about 1 unit.
   explicit PolygonCollider(double lengthScale) : scale_(lengthScale) {}
   double lengthScale() const { return scale_; }
 
-  /// Registers a polygon's body-frame geometry; returns its Box2D shape index.
+  /// Registers a polygon's body-frame geometry; returns its shape index.
   int add(const Polygon& poly);
 
-  /// Contact of shape a (pose xa, angle aa) with shape b; normal from a to b.
-  ContactGeometry collidePolygons(int a, const Vec2& xa, double aa, int b, const Vec2& xb,
-                                  double ab) const;
+  /// Contact of polygon a with polygon b; normal from a to b.
+  ContactGeometry collidePolygons(int a, const Pose& pa, int b, const Pose& pb) const;
   /// Contact of polygon a with a disc of radius rb at xb; normal from the polygon to the disc.
-  ContactGeometry collidePolygonDisc(int a, const Vec2& xa, double aa, const Vec2& xb,
-                                     double rb) const;
+  ContactGeometry collidePolygonDisc(int a, const Pose& pa, const Vec2& xb, double rb) const;
+
+  /// Separating-axis cache for a pair that is apart: an axis is an edge of either polygon
+  /// (code = edge + kMaxPolygonVertices × owner, owner 0 for a, 1 for b). Pairs in a packing
+  /// stay apart along the same edge for many steps, so one edge test usually settles them
+  /// without the full collision.
+  bool separatedAlong(int axis, int a, const Pose& pa, int b, const Pose& pb) const;
+  /// The edge along which a and b are most apart, or -1 if they overlap.
+  int separatingAxis(int a, const Pose& pa, int b, const Pose& pb) const;
 
  private:
+  // Separation of polygon `other` from edge k of polygon `ref`, both in world poses.
+  double edgeSeparation(const Polygon& ref, const Pose& pr, int k, const Polygon& other, const Pose& po) const;
+
   double scale_;
   std::vector<b2PolygonShape> shapes_;
+  std::vector<Polygon> polygons_;
 };
 
 }  // namespace grainlab

@@ -58,6 +58,8 @@ int World::addParticle(const ParticleSpec& spec) {
 
   position_.push_back(centre);
   angle_.push_back(spec.angle);
+  cos_.push_back(std::cos(spec.angle));
+  sin_.push_back(std::sin(spec.angle));
   velocity_.push_back(moving ? spec.velocity : Vec2::Zero());
   spin_.push_back(moving ? spec.spin : 0.0);
   force_.push_back(Vec2::Zero());
@@ -93,6 +95,7 @@ void World::setFriction(double mu) {
 }
 
 double World::criticalTimestep() const {
+  if (prepared_) return criticalTimestep_;
   double dt = std::numeric_limits<double>::infinity();
   const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
   for (int k = 0; k < size(); ++k) {
@@ -136,6 +139,7 @@ void World::prepare() {
   for (double r : boundingRadius_) meanRadius += r;
   skin_ = size() ? settings_.skinFraction * meanRadius / size() : 0.0;
   neighbors_->invalidate();
+  criticalTimestep_ = criticalTimestep();  // particles are fixed from here on: compute once
   prepared_ = true;
   if (timestep() <= 0 || !std::isfinite(timestep())) {
     throw SimulationError("no usable timestep: the scene has no particle with mass");
@@ -168,32 +172,40 @@ void World::drift(double dt) {
   const int n = size();
   for (int k = 0; k < n; ++k) {
     position_[k] += velocity_[k] * dt;
-    angle_[k] += spin_[k] * dt;
+    if (spin_[k] != 0) {
+      angle_[k] += spin_[k] * dt;
+      cos_[k] = std::cos(angle_[k]);
+      sin_[k] = std::sin(angle_[k]);
+    }
   }
 }
 
-// The contact between the two members of a pair, whatever their shapes.
-static ContactGeometry pairGeometry(const PairState& p, std::span<const Vec2> x,
-                                    std::span<const double> angle, std::span<const double> radius,
-                                    std::span<const ShapeKind> shape, std::span<const int> shapeIndex,
-                                    std::span<const Polygon> polygons, std::span<const Wall> walls,
-                                    const PolygonCollider& collider) {
+// The contact between the two members of a pair, whatever their shapes. With `axis`, a
+// polygon pair first tries its cached separating axis and keeps it up to date.
+ContactGeometry World::pairGeometry(const PairState& p, int* axis) const {
   const int i = p.i, j = p.j;
+  const auto& x = position_;
+  const auto& radius = boundingRadius_;
   if (j < 0) {
-    const Wall& wall = walls[static_cast<size_t>(-1 - j)];
-    return shape[i] == ShapeKind::Disc
+    const Wall& wall = walls_[static_cast<size_t>(-1 - j)];
+    return shape_[i] == ShapeKind::Disc
                ? collideDiscWall(x[i], radius[i], wall)
-               : collidePolygonWall(polygons[static_cast<size_t>(shapeIndex[i])], x[i], angle[i], wall);
+               : collidePolygonWall(polygons_[static_cast<size_t>(shapeIndex_[i])], x[i], cos_[i], sin_[i], wall);
   }
   const double reach = radius[i] + radius[j];
   if ((x[j] - x[i]).squaredNorm() >= reach * reach) return {};  // bounding circles apart
-  const bool iDisc = shape[i] == ShapeKind::Disc, jDisc = shape[j] == ShapeKind::Disc;
+  const bool iDisc = shape_[i] == ShapeKind::Disc, jDisc = shape_[j] == ShapeKind::Disc;
   if (iDisc && jDisc) return collideDiscs(x[i], radius[i], x[j], radius[j]);
+  const Pose pi{x[i], cos_[i], sin_[i]}, pj{x[j], cos_[j], sin_[j]};
   if (!iDisc && !jDisc) {
-    return collider.collidePolygons(shapeIndex[i], x[i], angle[i], shapeIndex[j], x[j], angle[j]);
+    const int a = shapeIndex_[i], b = shapeIndex_[j];
+    if (axis && *axis >= 0 && polygonCollider_->separatedAlong(*axis, a, pi, b, pj)) return {};
+    ContactGeometry g = polygonCollider_->collidePolygons(a, pi, b, pj);
+    if (axis) *axis = g.overlap > 0 ? -1 : polygonCollider_->separatingAxis(a, pi, b, pj);
+    return g;
   }
-  if (!iDisc) return collider.collidePolygonDisc(shapeIndex[i], x[i], angle[i], x[j], radius[j]);
-  ContactGeometry g = collider.collidePolygonDisc(shapeIndex[j], x[j], angle[j], x[i], radius[i]);
+  if (!iDisc) return polygonCollider_->collidePolygonDisc(shapeIndex_[i], pi, x[j], radius[j]);
+  ContactGeometry g = polygonCollider_->collidePolygonDisc(shapeIndex_[j], pj, x[i], radius[i]);
   g.normal = -g.normal;
   return g;
 }
@@ -214,8 +226,7 @@ void World::pairForces(const Law& law) {
       g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
                  : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
     } else {
-      g = pairGeometry(p, position_, angle_, boundingRadius_, shape_, shapeIndex_, polygons_, walls_,
-                       *polygonCollider_);
+      g = pairGeometry(p, &p.axis);
     }
     if (g.overlap <= 0) {
       p.history = 0;
@@ -320,8 +331,7 @@ void World::contacts(std::vector<ContactRecord>& out) const {
   if (!prepared_) return;
   for (const PairState& p : neighbors_->pairs()) {
     if (p.overlap <= 0) continue;
-    const ContactGeometry g = pairGeometry(p, position_, angle_, boundingRadius_, shape_, shapeIndex_,
-                                           polygons_, walls_, *polygonCollider_);
+    const ContactGeometry g = pairGeometry(p, nullptr);
     ContactRecord c;
     c.i = p.i;
     c.j = p.j;

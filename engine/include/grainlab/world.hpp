@@ -18,6 +18,8 @@ namespace grainlab {
 
 class NeighborList;
 class PolygonCollider;
+struct PairState;
+struct ContactGeometry;
 
 struct WorldSettings {
   /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
@@ -102,6 +104,7 @@ class World {
   void computeForces();
   void kick(double dt);
   void assignDamping();
+  ContactGeometry pairGeometry(const PairState& pair, int* axis) const;
   void applyLocalDamping();
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
@@ -115,10 +118,12 @@ class World {
   double time_ = 0;
   bool prepared_ = false;
   double skin_ = 0;  // m
+  double criticalTimestep_ = 0;  // s, cached by prepare()
 
   // Hot state, one entry per particle.
   std::vector<Vec2> position_, velocity_, force_;
   std::vector<double> angle_, spin_, torque_;
+  std::vector<double> cos_, sin_;        // of angle_, refreshed once per step for the colliders
   std::vector<double> invMass_, invInertia_;
   // Cold data.
   std::vector<double> mass_, inertia_, boundingRadius_;
