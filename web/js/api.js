@@ -1,0 +1,68 @@
+// The REST API (docs/http-api.md, contracts.md): one function per endpoint. Failures throw
+// ApiError carrying the server's {"error", "field"} so forms can show them beside the field.
+
+export class ApiError extends Error {
+  constructor(status, message, field) {
+    super(message);
+    this.status = status;
+    this.field = field ?? null;
+  }
+}
+
+async function request(method, path, { body, expect = 'json' } = {}) {
+  const init = { method, headers: {} };
+  if (body !== undefined) {
+    init.body = JSON.stringify(body);
+    init.headers['content-type'] = 'application/json';
+  }
+  let response;
+  try {
+    response = await fetch(path, init);
+  } catch (error) {
+    throw new ApiError(0, `the server cannot be reached (${error.message})`);
+  }
+  if (!response.ok) {
+    let message = `${response.status} ${response.statusText}`;
+    let field = null;
+    const text = await response.text();
+    try {
+      const parsed = JSON.parse(text);
+      message = parsed.error ?? message;
+      field = parsed.field ?? null;
+    } catch {
+      if (text.trim()) message = text.trim();
+    }
+    throw new ApiError(response.status, message, field);
+  }
+  if (response.status === 204) return null;
+  if (expect === 'binary') return response.arrayBuffer();
+  if (expect === 'text') return response.text();
+  return response.json();
+}
+
+const runPath = (id) => `/api/runs/${encodeURIComponent(id)}`;
+
+export const api = {
+  health: () => request('GET', '/api/health'),
+  presets: async () => (await request('GET', '/api/presets')).presets,
+  preset: (name) => request('GET', `/api/presets/${encodeURIComponent(name)}`),
+  runs: async () => (await request('GET', '/api/runs')).runs,
+  run: (id) => request('GET', runPath(id)),
+  /** A scene object or {preset: NAME}; resolves to the new run's id. */
+  createRun: async (body) => (await request('POST', '/api/runs', { body })).id,
+  cancel: (id) => request('POST', `${runPath(id)}/cancel`),
+  remove: (id) => request('DELETE', runPath(id)),
+  /** {id, columns, rows: [[...]]} */
+  series: (id) => request('GET', `${runPath(id)}/series`),
+  /** {id, histograms: [{type, seq, step, time, stage, histograms}]} */
+  histograms: (id) => request('GET', `${runPath(id)}/histograms`),
+  /** {id, frames: [{index, step, time, bytes}]} */
+  frameIndex: (id) => request('GET', `${runPath(id)}/frames`),
+  frame: (id, index) => request('GET', `${runPath(id)}/frames?index=${index}`, { expect: 'binary' }),
+  shapes: (id) => request('GET', `${runPath(id)}/shapes`),
+  csvUrl: (id) => `${runPath(id)}/series?format=csv`,
+  streamUrl: (id) => {
+    const scheme = location.protocol === 'https:' ? 'wss' : 'ws';
+    return `${scheme}://${location.host}${runPath(id)}/stream`;
+  },
+};

@@ -1,0 +1,80 @@
+// The run's charts against axial strain (the shearing stage, as the paper plots them) or
+// against time (every stage, to watch compaction). Redrawn at most once per animation frame
+// however fast samples arrive.
+import { h } from './dom.js';
+import { ChartPanel } from './chart_panel.js';
+import { RUN_CHARTS, X_AXES, chartDomain } from './chart_specs.js';
+
+export class RunCharts {
+  constructor(parent, shearing) {
+    this.shearing = shearing;
+    this.table = null;
+    this.markerRow = null;
+    this.pending = 0;
+    this.xSelect = h('select', { 'aria-label': 'x axis', onchange: () => this.build() },
+      h('option', { value: 'strain' }, 'axial strain (shearing stage)'),
+      h('option', { value: 'time' }, 'time (all stages)'));
+    this.grid = h('div', { class: 'charts-grid' });
+    this.element = h('section', {},
+      h('div', { class: 'charts-head' }, h('h3', {}, 'Charts'), h('label', {}, 'x axis: ', this.xSelect),
+        h('span', { class: 'hint' }, 'drag across a chart to zoom, double-click to zoom out')),
+      this.grid);
+    parent.append(this.element);
+    this.panels = [];
+    this.build();
+  }
+
+  get xAxis() {
+    return X_AXES[this.xSelect.value];
+  }
+
+  build() {
+    for (const panel of this.panels) panel.destroy();
+    const emptyText = this.xAxis.shearingOnly
+      ? 'The shearing stage has not started: choose time as the x axis to watch the earlier stages.'
+      : 'No samples yet.';
+    this.panels = RUN_CHARTS.map((spec) => new ChartPanel(this.grid, { ...spec, xLabel: this.xAxis.label, emptyText }));
+    this.domain = null;
+    this.draw();
+  }
+
+  update(table) {
+    this.table = table;
+    if (this.pending) return;
+    this.pending = requestAnimationFrame(() => {
+      this.pending = 0;
+      this.draw();
+    });
+  }
+
+  draw() {
+    if (!this.table) return;
+    const table = this.table;
+    this.domain = chartDomain(table, this.xAxis, this.shearing);
+    const { rows, x } = this.domain;
+    RUN_CHARTS.forEach((spec, k) => {
+      this.panels[k].setData(x, spec.series.map((s) => rows.map((i) => s.value(table, i))));
+    });
+    this.applyMarker();
+  }
+
+  /** Marks series row `row` on every chart (or clears the mark for null). */
+  setMarkerRow(row) {
+    this.markerRow = row;
+    this.applyMarker();
+  }
+
+  applyMarker() {
+    let x = null;
+    if (this.markerRow !== null && this.domain) {
+      const at = this.domain.rows.indexOf(this.markerRow);
+      if (at >= 0) x = this.domain.x[at];
+    }
+    for (const panel of this.panels) panel.setMarker(x);
+  }
+
+  destroy() {
+    if (this.pending) cancelAnimationFrame(this.pending);
+    for (const panel of this.panels) panel.destroy();
+  }
+}

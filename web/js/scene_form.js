@@ -1,0 +1,148 @@
+// The New run form's editable parameters: each field names where it lives in the scene JSON
+// (contracts.md), so values read from a preset's scene, edits write back into it, and the
+// API's 400 {"error", "field"} is shown beside the field whose path it names.
+
+/** "stages[2].pressure" → ["stages", 2, "pressure"] */
+export function parsePath(path) {
+  const parts = [];
+  for (const piece of path.split('.')) {
+    const match = /^([^[\]]+)((?:\[\d+\])*)$/.exec(piece);
+    if (!match) return [path];
+    parts.push(match[1]);
+    for (const index of match[2].matchAll(/\[(\d+)\]/g)) parts.push(Number(index[1]));
+  }
+  return parts;
+}
+
+export function getPath(object, path) {
+  let at = object;
+  for (const part of parsePath(path)) {
+    if (at === null || typeof at !== 'object') return undefined;
+    at = at[part];
+  }
+  return at;
+}
+
+/** Sets the value, creating objects on the way; `undefined` removes the key. */
+export function setPath(object, path, value) {
+  const parts = parsePath(path);
+  let at = object;
+  for (const part of parts.slice(0, -1)) {
+    if (at[part] === null || typeof at[part] !== 'object') {
+      if (value === undefined) return;
+      at[part] = {};
+    }
+    at = at[part];
+  }
+  const last = parts[parts.length - 1];
+  if (value === undefined) delete at[last];
+  else at[last] = value;
+}
+
+const fixed = (path) => () => [path];
+const stagePaths = (types, key) => (scene) =>
+  (scene.stages ?? []).flatMap((stage, k) => (types.includes(stage.type) ? [`stages[${k}].${key}`] : []));
+const hasAssembly = (scene) => Boolean(scene.assembly);
+const elongated = (scene) => scene.assembly?.shape === 'elongated';
+
+/**
+ * kind: number | integer | text | select. factor: scene value = shown value × factor.
+ * visible(scene): whether the scene has the part the field edits.
+ */
+export const SCENE_FIELDS = [
+  { section: 'Run' },
+  { key: 'name', label: 'Name', kind: 'text', paths: fixed('name') },
+  { key: 'seed', label: 'Random seed', kind: 'integer', paths: fixed('seed') },
+  { section: 'Material' },
+  { key: 'friction', label: 'Friction coefficient μ', kind: 'number', paths: fixed('material.friction') },
+  { key: 'normal_stiffness', label: 'Normal stiffness kₙ', unit: 'N/m', kind: 'number', paths: fixed('material.normal_stiffness') },
+  { key: 'tangential_stiffness', label: 'Tangential stiffness kₜ', unit: 'N/m', kind: 'number', paths: fixed('material.tangential_stiffness') },
+  { section: 'Loading' },
+  {
+    key: 'confining', label: 'Confining stress', unit: 'kPa', kind: 'number', factor: 1e3,
+    paths: stagePaths(['isotropic', 'biaxial'], 'pressure'),
+    hint: 'the consolidation pressure and the shearing stage\'s constant σ₁₁',
+  },
+  { key: 'strain_rate', label: 'Axial strain rate', unit: '1/s', kind: 'number', paths: stagePaths(['biaxial'], 'strain_rate') },
+  { key: 'target_axial_strain', label: 'Final axial strain', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['biaxial'], 'target_axial_strain') },
+  { section: 'Specimen' },
+  {
+    key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,
+    options: [['disc', 'circular discs'], ['elongated', 'elongated polygons']],
+  },
+  { key: 'aspect_ratio', label: 'Aspect ratio', kind: 'number', paths: fixed('assembly.aspect_ratio'), visible: elongated },
+  {
+    key: 'orientation', label: 'Orientation', kind: 'select', paths: fixed('assembly.orientation'), visible: elongated,
+    options: [['random', 'random'], ['bedding', 'bedding plane']],
+  },
+  {
+    key: 'bedding_angle', label: 'Bedding angle α', unit: '°', kind: 'number', paths: fixed('assembly.bedding_angle_deg'),
+    visible: (scene) => elongated(scene) && scene.assembly?.orientation === 'bedding',
+  },
+  { key: 'specimen_diameter', label: 'Specimen diameter', unit: 'mm', kind: 'number', factor: 1e-3, paths: fixed('assembly.specimen_diameter'), visible: hasAssembly },
+  { section: 'Solver' },
+  {
+    key: 'timestep_safety', label: 'Timestep safety', kind: 'number', paths: fixed('solver.timestep_safety'),
+    hint: 'fraction of the critical timestep',
+  },
+];
+
+export function fieldVisible(field, scene) {
+  if (field.visible && !field.visible(scene)) return false;
+  return field.paths(scene).length > 0;
+}
+
+/** The scene's value as the form shows it ('' when the key is absent: the default applies). */
+export function displayValue(field, scene) {
+  const value = getPath(scene, field.paths(scene)[0]);
+  if (value === undefined || value === null) return '';
+  if (field.kind === 'number' && typeof value === 'number') {
+    const shown = Number((value / (field.factor ?? 1)).toPrecision(12));
+    // Stiffnesses read better as 3e+8 than as 300000000.
+    return Math.abs(shown) >= 1e6 ? shown.toExponential() : String(shown);
+  }
+  return String(value);
+}
+
+/**
+ * Writes the text typed into the field into the scene. Returns an error message for text that
+ * is not a value of the field's kind (the scene is then left as it was), else null.
+ */
+export function applyValue(field, scene, text) {
+  const trimmed = text.trim();
+  let value;
+  if (trimmed === '') {
+    value = undefined;  // omitted: the engine's documented default
+  } else if (field.kind === 'number' || field.kind === 'integer') {
+    const number = Number(trimmed);
+    if (!Number.isFinite(number)) return 'must be a number';
+    if (field.kind === 'integer' && !Number.isInteger(number)) return 'must be a whole number';
+    value = field.kind === 'number' ? number * (field.factor ?? 1) : number;
+  } else {
+    value = trimmed;
+  }
+  for (const path of field.paths(scene)) setPath(scene, path, value);
+  return null;
+}
+
+/** The field whose paths include the API's error field ("material.friction"), or null. */
+export function fieldForPath(scene, path) {
+  if (!path) return null;
+  return SCENE_FIELDS.find((field) => field.paths && field.paths(scene).includes(path)) ?? null;
+}
+
+/** One line about a preset's scene: particles, specimen, stages. */
+export function describeScene(scene) {
+  const parts = [];
+  const a = scene.assembly;
+  if (a) {
+    const shape = a.shape === 'elongated'
+      ? `elongated polygons (aspect ${a.aspect_ratio ?? 'default'}, ${a.orientation === 'bedding' ? `bedding α = ${a.bedding_angle_deg}°` : 'random orientation'})`
+      : `discs of radius ${(a.disc_radius ?? 0.002) * 1e3} mm`;
+    parts.push(`${shape} in a ${(a.specimen_diameter ?? 0) * 1e3} mm specimen`);
+  } else if (scene.particles) {
+    parts.push(`${scene.particles.length} explicit particles`);
+  }
+  if (scene.stages?.length) parts.push(`stages: ${scene.stages.map((s) => s.name ?? s.type).join(' → ')}`);
+  return parts.join('; ');
+}
