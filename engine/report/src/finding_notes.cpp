@@ -1,0 +1,114 @@
+// The notes beside the findings: where a claim does not hold or cannot be told, the likely
+// reasons, with the numbers of these runs (sizes, noise floors, servo error) filled in.
+#include <algorithm>
+#include <cmath>
+
+#include "grainlab/report/findings.hpp"
+#include "grainlab/report/markup.hpp"
+#include "grainlab/report/series_stats.hpp"
+
+namespace grainlab::report {
+namespace {
+
+struct RunFacts {
+  bool quick = false;
+  int minParticles = 0, maxParticles = 0;  // including the membrane's ring
+  double minContacts = 0, maxFloor = 0;    // at the start of shearing
+  double servoError = 0;                   // max |σ11 − 300 kPa| / 300 kPa over the shearing
+};
+
+RunFacts factsOf(std::span<const AssemblyResult> runs) {
+  RunFacts f;
+  bool first = true;
+  for (const AssemblyResult& a : runs) {
+    if (a.shearing.size() == 0) continue;
+    f.quick = f.quick || a.quick;
+    const double contacts = a.shearing.at("contacts", 0);
+    f.minParticles = first ? a.summary.particles : std::min(f.minParticles, a.summary.particles);
+    f.maxParticles = first ? a.summary.particles : std::max(f.maxParticles, a.summary.particles);
+    f.minContacts = first ? contacts : std::min(f.minContacts, contacts);
+    f.maxFloor = std::max(f.maxFloor, noiseFloor(contacts));
+    first = false;
+    for (double s : a.shearing.column("sigma11")) {
+      if (std::isfinite(s)) f.servoError = std::max(f.servoError, std::abs(s - 300e3) / 300e3);
+    }
+  }
+  return f;
+}
+
+std::string sizeSentence(const RunFacts& f) {
+  std::string range = std::to_string(f.minParticles);
+  if (f.maxParticles != f.minParticles) range += '-' + std::to_string(f.maxParticles);
+  std::string s = "These specimens hold " + range + " particles (ring included) and about " + fixed(f.minContacts, 0) +
+                  " contacts at the start of shearing, so a_k below " + fixed(2 * f.maxFloor, 3) +
+                  " (twice the noise floor 1.25·√(2/N_c)) is noise. ";
+  if (f.quick) {
+    s += "They are the -quick presets (60 mm across): small and noisy, meant to exercise the pipeline, not to settle "
+         "the paper's claims; run `grainlab paper` without --quick for the 160 mm specimens. ";
+  } else {
+    // Discs of r = 2 mm filling a 160 mm circle at the paper's void ratio 0.282: (R/r)²/(1 + e).
+    const double discs = (0.080 * 0.080) / (0.002 * 0.002) / (1 + 0.282);
+    s += "The paper reports 2000-2500 particles per specimen, but a 160 mm specimen of r = 2 mm discs at e = 0.282 "
+         "holds only about " + fixed(discs, 0) + ", so the paper's circular specimen cannot have been both; ours "
+         "follows the stated sizes and is noisier for it. ";
+  }
+  return s;
+}
+
+std::string servoSentence(const RunFacts& f) {
+  return "During shearing σ11 strays up to " + fixed(f.servoError * 100, 1) +
+         " % from the 300 kPa the servo should hold; every swing of the lateral stress turns the principal axes. ";
+}
+
+std::string reasons(const Finding& finding, const RunFacts& facts) {
+  switch (finding.number) {
+    case 1:
+      return "σ12 − σ21 measures how far particles are from moment equilibrium when sampled: sizeable values point to "
+             "inertia (a shearing that is not quasi-static enough; see inertial_number in series.csv) rather than to "
+             "the formula. " + servoSentence(facts);
+    case 2:
+      return "Discs are soft here: each contact point sits δ/2 inside the disc, so l_n = r − δ/2 varies with the "
+             "normal force and a_ln ≈ (δ/2r)·a_n, of order 1e-3 at 300 kPa. The paper's circular specimen starts "
+             "near 120°, a trace of how it was prepared; an isotropically consolidated random packing starts with a_c "
+             "near the noise floor, where its direction is chance. " + sizeSentence(facts);
+    case 3:
+      return "a_ln and a_lt come from the particles' elongation meeting the contact normals; random orientation "
+             "cancels it only on average, so small specimens keep a residual branch anisotropy. " +
+             sizeSentence(facts);
+    case 4:
+      return "The starting fabric depends on how the bedding survives compaction and consolidation: our specimens "
+             "are placed with their long axes at α and then compacted without friction, which can rotate "
+             "particles; and for α = 90° the paper itself reports a_c falling to near zero, where θ_c means nothing. "
+             "The grading (count fractions solved for Cu = 1.35 and Cc = 1.2) and six-vertex polygons inscribed in "
+             "the ellipse are our interpretation of the paper's particles. " + sizeSentence(facts);
+    case 5:
+      return "ω is the angle between two nearly coaxial directions, a few degrees at most, so it is sensitive to "
+             "noise: " + servoSentence(facts) + sizeSentence(facts);
+    case 6:
+      return "Eq. (7) drops third-order products of the a_k, a fraction of a degree for realistic states; Eq. (10) "
+             "is the unweighted mean of θ_c, θ_n, θ_t and is right only when a_c ≈ a_n ≈ a_t; Eq. (11)'s error is "
+             "first order in a_ln and a_lt, so it fails only where those are well above the noise and their "
+             "directions differ from θσ. " + sizeSentence(facts);
+    case 7:
+      return "Our void ratio is the membrane's enclosed area less the particles' area, so voids along the membrane "
+             "count; our grading interpretation, the six-vertex polygons and the frictionless compaction set how "
+             "densely the particles pack; the paper's DISC/POLY preparation is described only in outline. " +
+             sizeSentence(facts);
+    default: return "";
+  }
+}
+
+}  // namespace
+
+std::vector<Finding> evaluateFindings(std::span<const AssemblyResult> runs) {
+  std::vector<Finding> all{findStressSymmetry(runs), findCircularFabric(runs),   findRandomBranchVectors(runs),
+                           findBeddingFabric(runs),  findOmegaDecay(runs),       findMicroExpressions(runs),
+                           findVoidRatios(runs)};
+  const RunFacts facts = factsOf(runs);
+  for (Finding& f : all) {
+    if (f.verdict != Verdict::Holds) f.note = reasons(f, facts);
+  }
+  return all;
+}
+
+}  // namespace grainlab::report
