@@ -11,6 +11,7 @@
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
+#include "paper_command.hpp"
 #ifdef GRAINLAB_HAS_SERVER
 #include "grainlab/server/serve.hpp"
 #endif
@@ -25,6 +26,7 @@ int usage(std::ostream& out, int code) {
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N]            speed on settled piles of discs and polygons\n"
+         "  paper --out DIR [--quick] [--jobs N]  the paper's six tests and report.html\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "                               the HTTP/WebSocket server and dashboard\n"
@@ -99,6 +101,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (command == "bench") return grainlab::benchCommand(args);
+    if (command == "paper") return grainlab::paperCommand(args);
 #ifdef GRAINLAB_HAS_SERVER
     if (command == "serve") return serveCommand(args);
 #endif

@@ -1,0 +1,47 @@
+#include "paper_command.hpp"
+
+#include <iostream>
+
+#include "grainlab/report/paper_report.hpp"
+
+namespace grainlab {
+
+int paperCommand(const std::vector<std::string>& args) {
+  report::PaperOptions options;
+  options.command = "grainlab paper";
+  for (const std::string& a : args) options.command += " " + a;
+  for (size_t k = 0; k < args.size(); ++k) {
+    const bool hasValue = k + 1 < args.size();
+    if (args[k] == "--out" && hasValue) {
+      options.outDir = args[++k];
+    } else if (args[k] == "--quick") {
+      options.quick = true;
+    } else if (args[k] == "--jobs" && hasValue) {
+      const std::string& value = args[++k];
+      if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || std::stoul(value) == 0) {
+        std::cerr << "grainlab paper: --jobs takes a positive whole number, not \"" << value << "\"\n";
+        return 2;
+      }
+      options.jobs = static_cast<unsigned>(std::stoul(value));
+    } else {
+      std::cerr << "grainlab paper: unexpected argument " << args[k] << "\n"
+                << "usage: grainlab paper --out DIR [--quick] [--jobs N]\n";
+      return 2;
+    }
+  }
+  if (options.outDir.empty()) {
+    std::cerr << "grainlab paper: give --out DIR\n";
+    return 2;
+  }
+  const report::PaperOutcome outcome = report::runPaper(options, &std::cerr);
+  int failed = 0;
+  for (const report::AssemblyResult& a : outcome.runs) {
+    if (a.summary.status == "completed") continue;
+    ++failed;
+    std::cerr << "error: " << a.preset << " " << a.summary.status << (a.summary.error.empty() ? "" : ": " + a.summary.error)
+              << "\n";
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,41 @@
+#pragma once
+// `grainlab paper` end to end: run the six assemblies, then write DIR/report.html, the CSV
+// behind every figure (DIR/fig06.csv ... fig15.csv, roses.csv), runs.csv, findings.csv, each
+// chart as a standalone SVG in DIR/svg/, and each run's own output in DIR/runs/<preset>/.
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "grainlab/report/assembly_result.hpp"
+#include "grainlab/report/findings.hpp"
+#include "grainlab/report/html_report.hpp"
+
+namespace grainlab::report {
+
+/// circular, elongated-random, elongated-bedding-{0,30,60,90}; with `quick` their -quick variants.
+std::vector<std::string> paperPresets(bool quick);
+
+struct PaperOptions {
+  std::string outDir;
+  bool quick = false;
+  unsigned jobs = 0;          ///< runs at once; 0 = hardware threads (never more than those)
+  std::string command;        ///< shown in the report
+};
+
+struct PaperOutcome {
+  std::vector<AssemblyResult> runs;
+  std::vector<Finding> findings;
+  double wallSeconds = 0;     ///< s
+  bool allCompleted = false;
+};
+
+/// Writes every file of the report from finished runs; returns the findings. Creates outDir
+/// (and svg/) if needed; throws std::runtime_error if a file cannot be written.
+std::vector<Finding> writePaperReport(const std::string& outDir, std::span<const AssemblyResult> runs,
+                                      const ReportContext& context);
+
+/// Runs the six assemblies (progress lines to `progress`, may be null) and writes the report.
+PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress);
+
+}  // namespace grainlab::report
