@@ -53,7 +53,7 @@ export class RunCharts {
     this.domain = chartDomain(table, this.xAxis, this.shearing);
     const { rows, x } = this.domain;
     RUN_CHARTS.forEach((spec, k) => {
-      this.panels[k].setData(x, spec.series.map((s) => rows.map((i) => s.value(table, i))));
+      this.panels[k].setData(x, spec.series.map((s) => s.values(table, rows)));
     });
     this.applyMarker();
   }

@@ -48,11 +48,6 @@ export class SeriesTable {
     return c === undefined ? null : this.data[c];
   }
 
-  value(name, i) {
-    const c = this.index.get(name);
-    return c === undefined ? null : this.data[c][i] ?? null;
-  }
-
   /** Row i as {column: value}. */
   row(i) {
     if (i < 0 || i >= this.length) return null;

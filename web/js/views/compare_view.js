@@ -58,7 +58,7 @@ export function compareView(root, params) {
         spanGaps: true,
         emptyText: 'None of these runs has reached its shearing stage.',
       });
-      const tables = runs.map(({ table }, k) => [domains[k].x, domains[k].rows.map((i) => spec.value(table, i))]);
+      const tables = runs.map(({ table }, k) => [domains[k].x, spec.values(table, domains[k].rows)]);
       const joined = tables.some((t) => t[0].length) ? joinTables(tables) : [[], ...tables.map(() => [])];
       panel.setData(joined[0], joined.slice(1));
       panels.push(panel);
