@@ -20,9 +20,17 @@ export class ReplaySource {
     this.histograms = histograms.histograms.slice().sort((a, b) => a.seq - b.seq);
   }
 
-  /** The stored frame at or before `step` (the first one if none is), or null. */
-  frameInfoAt(step) {
-    return lastAtOrBefore(this.frames, step, (f) => f.step) ?? this.frames[0] ?? null;
+  /**
+   * The stored frame nearest to `step`, or null. Frames are stored every few samples plus the
+   * final state, which a cancelled run reaches after its last sample: nearest, not "at or
+   * before", shows that final state at the slider's end.
+   */
+  frameNearest(step) {
+    const before = lastAtOrBefore(this.frames, step, (f) => f.step);
+    const after = before ? this.frames[this.frames.indexOf(before) + 1] : this.frames[0];
+    if (!before) return after ?? null;
+    if (!after) return before;
+    return step - before.step <= after.step - step ? before : after;
   }
 
   /** The stored histogram message at or before sample `seq`, or null. */

@@ -1,6 +1,7 @@
 // The run's charts against axial strain (the shearing stage, as the paper plots them) or
-// against time (every stage, to watch compaction). Redrawn at most once per animation frame
-// however fast samples arrive.
+// against time (every stage, to watch compaction). Until the person picks one, the x axis is
+// time while the shearing stage has not started and axial strain from its first sample on.
+// Redrawn at most once per animation frame however fast samples arrive.
 import { h } from './dom.js';
 import { ChartPanel } from './chart_panel.js';
 import { RUN_CHARTS, X_AXES, chartDomain } from './chart_specs.js';
@@ -11,9 +12,17 @@ export class RunCharts {
     this.table = null;
     this.markerRow = null;
     this.pending = 0;
-    this.xSelect = h('select', { 'aria-label': 'x axis', onchange: () => this.build() },
+    this.chosen = false;  // the person picked the x axis: keep it
+    this.xSelect = h('select', {
+      'aria-label': 'x axis',
+      onchange: () => {
+        this.chosen = true;
+        this.build();
+      },
+    },
       h('option', { value: 'strain' }, 'axial strain (shearing stage)'),
       h('option', { value: 'time' }, 'time (all stages)'));
+    this.xSelect.value = 'time';
     this.grid = h('div', { class: 'charts-grid' });
     this.element = h('section', {},
       h('div', { class: 'charts-head' }, h('h3', {}, 'Charts'), h('label', {}, 'x axis: ', this.xSelect),
@@ -50,12 +59,22 @@ export class RunCharts {
   draw() {
     if (!this.table) return;
     const table = this.table;
+    if (!this.chosen && this.xSelect.value === 'time' && this.hasShearing(table)) {
+      this.xSelect.value = 'strain';
+      this.build();  // draws again with the new axis
+      return;
+    }
     this.domain = chartDomain(table, this.xAxis, this.shearing);
     const { rows, x } = this.domain;
     RUN_CHARTS.forEach((spec, k) => {
       this.panels[k].setData(x, spec.series.map((s) => s.values(table, rows)));
     });
     this.applyMarker();
+  }
+
+  hasShearing(table) {
+    const stages = table.column('stage');
+    return Boolean(stages && stages.some((stage) => this.shearing.has(stage)));
   }
 
   /** Marks series row `row` on every chart (or clears the mark for null). */

@@ -55,9 +55,11 @@ export function runView(root, id) {
     const live = !TERMINAL_STATUSES.has(status);
     const started = run.started_at ? Date.parse(run.started_at) / 1000 : null;
     let timing = '';
-    if (live && started && progress >= 0.02) {  // earlier, the estimate is noise
+    if (live && started) {
       const elapsed = Date.now() / 1000 - started;
-      timing = `${duration(elapsed)} elapsed, about ${duration((elapsed * (1 - progress)) / progress)} left`;
+      timing = `${duration(elapsed)} elapsed`;
+      // Below 2 % the estimate is noise.
+      if (progress >= 0.02) timing += `, about ${duration((elapsed * (1 - progress)) / progress)} left`;
     } else if (run.wall_seconds !== null && run.wall_seconds !== undefined) {
       timing = `took ${duration(run.wall_seconds)}`;
     }
@@ -184,7 +186,7 @@ export function runView(root, id) {
     charts.setMarkerRow(row);
     const histogram = source.histogramAt(table.seqs[row]);
     if (histogram) roses.show(histogram, table.row(table.rowOfSeq(histogram.seq)));
-    const info = source.frameInfoAt(r.step);
+    const info = source.frameNearest(r.step);
     if (!info) return;
     const token = ++frameToken;
     source.frame(info).then((frame) => {
