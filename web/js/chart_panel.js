@@ -96,6 +96,7 @@ export class ChartPanel {
     if (!Number.isFinite(px) || px < u.bbox.left || px > u.bbox.left + u.bbox.width) return;
     const ctx = u.ctx;
     ctx.save();
+    ctx.setLineDash([]);  // a dashed series may have left its dash on the context
     ctx.strokeStyle = 'rgba(179, 38, 30, 0.8)';
     ctx.lineWidth = 1.5 * (window.devicePixelRatio || 1);
     ctx.beginPath();
