@@ -47,7 +47,8 @@ const elongated = (scene) => scene.assembly?.shape === 'elongated';
 
 /**
  * kind: number | integer | text | select. factor: scene value = shown value × factor.
- * visible(scene): whether the scene has the part the field edits.
+ * visible(scene): whether the scene has the part the field edits. fallback: what a select
+ * shows when the key is absent (the engine's default).
  */
 export const SCENE_FIELDS = [
   { section: 'Run' },
@@ -68,12 +69,12 @@ export const SCENE_FIELDS = [
   { section: 'Specimen' },
   {
     key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,
-    options: [['disc', 'circular discs'], ['elongated', 'elongated polygons']],
+    options: [['disc', 'circular discs'], ['elongated', 'elongated polygons']], fallback: 'disc',
   },
   { key: 'aspect_ratio', label: 'Aspect ratio', kind: 'number', paths: fixed('assembly.aspect_ratio'), visible: elongated },
   {
     key: 'orientation', label: 'Orientation', kind: 'select', paths: fixed('assembly.orientation'), visible: elongated,
-    options: [['random', 'random'], ['bedding', 'bedding plane']],
+    options: [['random', 'random'], ['bedding', 'bedding plane']], fallback: 'random',
   },
   {
     key: 'bedding_angle', label: 'Bedding angle α', unit: '°', kind: 'number', paths: fixed('assembly.bedding_angle_deg'),
@@ -95,7 +96,7 @@ export function fieldVisible(field, scene) {
 /** The scene's value as the form shows it ('' when the key is absent: the default applies). */
 export function displayValue(field, scene) {
   const value = getPath(scene, field.paths(scene)[0]);
-  if (value === undefined || value === null) return '';
+  if (value === undefined || value === null) return field.fallback ?? '';
   if (field.kind === 'number' && typeof value === 'number') {
     const shown = Number((value / (field.factor ?? 1)).toPrecision(12));
     // Stiffnesses read better as 3e+8 than as 300000000.

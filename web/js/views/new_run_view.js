@@ -62,6 +62,7 @@ export function newRunView(root, params) {
 
   /** Shows the scene's values; hides the fields the scene has no place for. */
   function fillForm() {
+    description.textContent = describeScene(scene);
     for (const field of SCENE_FIELDS) {
       if (field.section) continue;
       const { label, box, input } = inputs.get(field.key);
@@ -130,7 +131,6 @@ export function newRunView(root, params) {
       presetName = name;
       presetJson = JSON.stringify(loaded);
       scene = loaded;
-      description.textContent = describeScene(scene);
       clearErrors();
       fillForm();
       showJson();
