@@ -2,9 +2,10 @@
 // series, histograms and stored frames), with one strain slider driving every view.
 import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
-import { TERMINAL_STATUSES, duration, localTime, percent, sig } from '../format.js';
+import { TERMINAL_STATUSES } from '../format.js';
 import { ParticlePanel } from '../particle_panel.js';
 import { ReplayBar } from '../replay_bar.js';
+import { RunHeader } from '../run_header.js';
 import { ReplaySource } from '../replay_source.js';
 import { RosePanel } from '../rose_panel.js';
 import { RunCharts } from '../run_charts.js';
@@ -14,12 +15,13 @@ import { SeriesTable, shearingStages } from '../series_table.js';
 const RECONNECT_TRIES = 5;
 
 export function runView(root, id) {
-  const header = h('div', { class: 'run-header' });
+  const top = h('div');
   const errorBox = h('div', { class: 'run-error', hidden: true });
   const body = h('div', { class: 'run-body' });
   const below = h('div');
-  replaceChildren(root, h('section', { class: 'run-view' }, header, errorBox, body, below));
+  replaceChildren(root, h('section', { class: 'run-view' }, top, errorBox, body, below));
 
+  const header = new RunHeader(top, () => cancel());
   const particles = new ParticlePanel(body);
   const roses = new RosePanel(body);
   const replayBar = new ReplayBar(below, (row) => select(row));
@@ -49,38 +51,7 @@ export function runView(root, id) {
   }
 
   function renderHeader() {
-    const status = lastStatus?.status ?? run.status;
-    const progress = lastStatus?.progress ?? run.progress ?? 0;
-    const stage = lastStatus?.stage || run.stage;
-    const live = !TERMINAL_STATUSES.has(status);
-    const started = run.started_at ? Date.parse(run.started_at) / 1000 : null;
-    let timing = '';
-    if (live && started) {
-      const elapsed = Date.now() / 1000 - started;
-      timing = `${duration(elapsed)} elapsed`;
-      // Below 2 % the estimate is noise.
-      if (progress >= 0.02) timing += `, about ${duration((elapsed * (1 - progress)) / progress)} left`;
-    } else if (run.wall_seconds !== null && run.wall_seconds !== undefined) {
-      timing = `took ${duration(run.wall_seconds)}`;
-    }
-    replaceChildren(header,
-      h('h2', {}, `#${run.id} ${run.name}`),
-      h('span', { class: `status ${status}`, dataset: { status } }, status),
-      h('span', { class: 'progress', title: 'progress' },
-        h('span', { class: 'bar' }, h('span', { style: { width: percent(progress, 1) } })),
-        h('span', { class: 'label' }, percent(progress))),
-      h('span', { class: 'facts' }, [
-        stage ? `stage ${stage}` : null,
-        run.preset ? `preset ${run.preset}` : 'custom scene',
-        `${run.particles} particles`,
-        `created ${localTime(run.created_at)}`,
-        timing || null,
-        run.peak_phi_mob_deg !== null ? `peak φ_mob ${sig(run.peak_phi_mob_deg, 3)}°` : null,
-      ].filter(Boolean).join(' · ')),
-      h('span', { class: 'actions' },
-        live ? h('button', { type: 'button', class: 'danger', onclick: cancel }, 'Cancel run') : null,
-        h('a', { class: 'button', href: api.csvUrl(run.id), download: `grainlab-run-${run.id}-series.csv` }, 'Download CSV'),
-        h('a', { class: 'button', href: `#/compare?ids=${run.id}` }, 'Compare…')));
+    header.update(run, lastStatus);
     showError(run.error || lastStatus?.error || null);
   }
 

@@ -1,0 +1,61 @@
+// The run view's header: name, status, progress, facts (stage, preset, particles, timing,
+// peak φ_mob) and the actions. Built once and updated in place every second while the run
+// is live, so a click on Cancel is never lost to a re-render.
+import { api } from './api.js';
+import { h } from './dom.js';
+import { TERMINAL_STATUSES, duration, localTime, percent, sig } from './format.js';
+
+export class RunHeader {
+  constructor(parent, onCancel) {
+    this.title = h('h2');
+    this.status = h('span', { class: 'status' });
+    this.bar = h('span');
+    this.progressLabel = h('span', { class: 'label' });
+    this.facts = h('span', { class: 'facts' });
+    this.cancel = h('button', { type: 'button', class: 'danger', onclick: onCancel }, 'Cancel run');
+    this.csv = h('a', { class: 'button' }, 'Download CSV');
+    this.compare = h('a', { class: 'button' }, 'Compare…');
+    this.element = h('div', { class: 'run-header' },
+      this.title, this.status,
+      h('span', { class: 'progress', title: 'progress' }, h('span', { class: 'bar' }, this.bar), this.progressLabel),
+      this.facts,
+      h('span', { class: 'actions' }, this.cancel, this.csv, this.compare));
+    parent.append(this.element);
+  }
+
+  /** `run` from GET /api/runs/{id}; `live` the latest stream status message, or null. */
+  update(run, live) {
+    const status = live?.status ?? run.status;
+    const progress = live?.progress ?? run.progress ?? 0;
+    const stage = live?.stage || run.stage;
+    const running = !TERMINAL_STATUSES.has(status);
+    const started = run.started_at ? Date.parse(run.started_at) / 1000 : null;
+    let timing = null;
+    if (running && started) {
+      const elapsed = Date.now() / 1000 - started;
+      timing = `${duration(elapsed)} elapsed`;
+      // Below 2 % the estimate is noise.
+      if (progress >= 0.02) timing += `, about ${duration((elapsed * (1 - progress)) / progress)} left`;
+    } else if (run.wall_seconds !== null && run.wall_seconds !== undefined) {
+      timing = `took ${duration(run.wall_seconds)}`;
+    }
+    this.title.textContent = `#${run.id} ${run.name}`;
+    this.status.className = `status ${status}`;
+    this.status.dataset.status = status;
+    this.status.textContent = status;
+    this.bar.style.width = percent(progress, 1);
+    this.progressLabel.textContent = percent(progress);
+    this.facts.textContent = [
+      stage ? `stage ${stage}` : null,
+      run.preset ? `preset ${run.preset}` : 'custom scene',
+      `${run.particles} particles`,
+      `created ${localTime(run.created_at)}`,
+      timing,
+      run.peak_phi_mob_deg !== null ? `peak φ_mob ${sig(run.peak_phi_mob_deg, 3)}°` : null,
+    ].filter(Boolean).join(' · ');
+    this.cancel.hidden = !running;
+    this.csv.href = api.csvUrl(run.id);
+    this.csv.download = `grainlab-run-${run.id}-series.csv`;
+    this.compare.href = `#/compare?ids=${run.id}`;
+  }
+}
