@@ -80,6 +80,7 @@ try {
     particles: await canvasHash(page, 'canvas.particle-canvas'),
     rose: await page.$eval('.rose-panel', (p) => p.dataset.seq),
     where: await page.locator('.replay-bar .where').textContent(),
+    chart: await canvasHash(page, '.chart-panel[data-chart="strength"] canvas'),
   };
   // A sample early in the shearing stage: the first row whose label says "shearing".
   const series = await page.evaluate(async (id) => (await fetch(`/api/runs/${id}/series`)).json(), runId);
@@ -99,6 +100,8 @@ try {
     `sample ${before.rose} → ${roseAfter}`);
   const whereAfter = await page.locator('.replay-bar .where').textContent();
   check('the slider label names the sample, stage and axial strain', whereAfter !== before.where && /shearing · ε₂₂ = /.test(whereAfter), whereAfter);
+  check('the charts move their marker to the slider\'s sample',
+    (await canvasHash(page, '.chart-panel[data-chart="strength"] canvas')) !== before.chart);
   await screenshot(page, '04-replay');
 
   // ---- the particle view's controls ----
@@ -162,6 +165,40 @@ try {
   check('no run was created for the bad scene', runs === 1, `${runs} runs`);
   await screenshot(page, '07-validation-error');
 
+  // ---- polygons watched live, then cancelled and deleted ----
+  const liveId = await page.evaluate(async () => {
+    const response = await fetch('/api/runs', { method: 'POST', body: JSON.stringify({ preset: 'elongated-random-quick' }) });
+    return (await response.json()).id;
+  });
+  await page.goto(`${base}/#/run/${liveId}`);
+  const firstStep = await waitUntil(() => page.$eval('canvas.particle-canvas', (c) => c.dataset.step), 60);
+  const laterStep = await waitUntil(async () => {
+    const step = await page.$eval('canvas.particle-canvas', (c) => c.dataset.step);
+    return step !== firstStep ? step : null;
+  }, 30);
+  check('frames stream in live', Boolean(firstStep && laterStep), `step ${firstStep} → ${laterStep}`);
+  check('the live view says Live and holds the slider', (await page.locator('.replay-bar strong').textContent()) === 'Live'
+    && await page.$eval('.replay-bar input[type=range]', (s) => s.disabled));
+  const livePoints = await waitUntil(() => page.$eval('.chart-panel[data-chart="volumetric"]', (p) => Number(p.dataset.points) >= 3), 30);
+  check('the charts fill while the run goes on (against time before shearing)', Boolean(livePoints),
+    await page.locator('select[aria-label="x axis"]').inputValue());
+  const polygonInk = await canvasInk(page, 'canvas.particle-canvas');
+  check('the polygons are drawn', polygonInk > 0.05, `${(100 * polygonInk).toFixed(1)} % inked`);
+  await screenshot(page, '08-live-polygons');
+  await page.getByRole('button', { name: 'Cancel run' }).click();
+  const cancelled = await waitUntil(async () => (await page.locator('.run-header .status').getAttribute('data-status')) === 'cancelled', 60);
+  check('Cancel run stops it and the header says cancelled', Boolean(cancelled));
+  const cancelledReplay = await waitUntil(() => page.$eval('.replay-bar input[type=range]', (s) => !s.disabled), 30);
+  check('a cancelled run replays what it stored', Boolean(cancelledReplay));
+  await page.getByRole('link', { name: 'Runs' }).first().click();
+  const liveRow = page.locator(`tr[data-run-id="${liveId}"]`);
+  await liveRow.waitFor();
+  await liveRow.getByRole('button', { name: 'Delete' }).click();
+  await liveRow.getByRole('button', { name: 'Confirm delete' }).click();
+  await liveRow.waitFor({ state: 'detached', timeout: 10000 });
+  const remaining = await page.evaluate(async () => (await (await fetch('/api/runs')).json()).runs.map((r) => r.id));
+  check('Delete, confirmed, removes the run', !remaining.includes(liveId), `runs left: ${remaining.join(',')}`);
+
   // ---- compare: a second run (friction 0.3) overlaid on the first ----
   const secondId = await page.evaluate(async () => {
     const scene = await (await fetch('/api/presets/circular-quick')).json();
@@ -182,7 +219,7 @@ try {
   check('each compare chart overlays both runs', linesPerChart.length > 0 && linesPerChart.every((n) => n === 2), linesPerChart.join(','));
   const ticked = await page.$$eval('.compare-picker input:checked', (inputs) => inputs.map((i) => Number(i.dataset.runId)));
   check('the picker ticks the compared runs', ticked.length === 2 && ticked.includes(runId) && ticked.includes(secondId), ticked.join(','));
-  await screenshot(page, '08-compare');
+  await screenshot(page, '09-compare');
 
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
   exitCode = finish();
