@@ -60,8 +60,9 @@ constexpr const char* kMigrations[] = {
 
 // Every statement the server runs, by name.
 namespace sql {
+// The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
 constexpr const char* kListRuns =
-    "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
+    "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg FROM runs ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "

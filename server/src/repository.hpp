@@ -47,6 +47,7 @@ class Repository {
   static int schemaVersion();
 
   // ---- reads (any thread) ----
+  /// Every run, oldest first, without its scene (RunRecord::scene is empty).
   std::vector<RunRecord> listRuns();
   std::optional<RunRecord> findRun(std::int64_t id);
   std::vector<SampleRecord> samples(std::int64_t id);
