@@ -9,6 +9,11 @@
 const column = (name, factor = 1) => (table, rows) => {
   const data = table.column(name);
   if (!data) return rows.map(() => null);
+  // Rows ascend without repeats, so first and last tell whether they are one run of rows:
+  // then an unscaled column is a plain copy.
+  if (factor === 1 && rows.length && rows[rows.length - 1] - rows[0] === rows.length - 1) {
+    return data.slice(rows[0], rows[0] + rows.length);
+  }
   return rows.map((i) => (data[i] === null ? null : data[i] * factor));
 };
 
