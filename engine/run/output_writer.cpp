@@ -97,6 +97,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
   s["steps"] = summary.steps;
   s["particles"] = summary.particles;
   s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;
+  if (!summary.notes.empty()) s["notes"] = summary.notes;
   if (summary.voidRatioAfterConsolidation >= 0) s["void_ratio_after_consolidation"] = summary.voidRatioAfterConsolidation;
   s["timestep"] = world.timestep();
   s["critical_timestep"] = world.criticalTimestep();

@@ -57,6 +57,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer) {
       }
       if (summary.status == "cancelled") break;
       context->sample(observer);  // the state the stage ends in
+      if (const std::string note = stage.endNote(); !note.empty()) summary.notes.push_back(note);
       workDone += stage.work();
       context->endStage();
     }

@@ -63,6 +63,28 @@ double Membrane::enclosedArea() const {
   return 0.5 * std::abs(area2) - perimeter * r + kPi * r * r;
 }
 
+StressTensor Membrane::boundaryStress(std::span<const ContactRecord> contacts) const {
+  StressTensor s;
+  for (const ContactRecord& c : contacts) {
+    if (c.isWall()) continue;
+    const bool iRing = !inside_[c.i], jRing = !inside_[c.j];
+    if (iRing == jRing) continue;  // specimen-specimen (ring-ring pairs have no contact)
+    const Vec2 onJ = c.fn * c.normal + c.ft * perp(c.normal);
+    const Vec2 onSpecimen = iRing ? onJ : Vec2(-onJ);
+    const Vec2 x = c.point - centre_;
+    s.s11 -= onSpecimen.x() * x.x();
+    s.s12 -= onSpecimen.x() * x.y();
+    s.s21 -= onSpecimen.y() * x.x();
+    s.s22 -= onSpecimen.y() * x.y();
+  }
+  const double area = enclosedArea();
+  s.s11 /= area;
+  s.s12 /= area;
+  s.s21 /= area;
+  s.s22 /= area;
+  return s;
+}
+
 StressTensor Membrane::measureStress(std::vector<ContactRecord>& contacts) const {
   world_.contacts(contacts);
   return contactStress(contacts, world_.positions(), inside_, enclosedArea());

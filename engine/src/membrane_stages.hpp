@@ -25,7 +25,8 @@ class MembraneStage : public Stage {
  protected:
   /// Called after each stress measurement: choose the strain rates.
   virtual void control() = 0;
-  bool timedOut() const { return spec_.maxTime > 0 && world_.time() - startTime_ >= spec_.maxTime; }
+  bool timedOut() const { return world_.time() - startTime_ >= spec_.maxTime; }
+  std::string endNote() const override;
   /// A servo whose response time is a few times the time a wave takes to cross the specimen.
   StressServo makeServo(double target, double maxRate) const;
 

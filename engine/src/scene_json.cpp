@@ -95,7 +95,13 @@ StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
     s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
     if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
   }
-  s.maxTime = r.number("max_time", 0, 0, kInf);
+  // Every loading stage has a time limit, so a criterion that is never met cannot run forever:
+  // compaction and consolidation 1 s of simulated time (about ten times what the presets
+  // need), shearing twice the time its target strain takes.
+  const double defaultMaxTime = s.type == StageSpec::Type::Biaxial ? 2 * s.targetAxialStrain / s.strainRate
+                                : s.type == StageSpec::Type::Free  ? kInf
+                                                                   : 1.0;
+  s.maxTime = r.number("max_time", defaultMaxTime, 0, kInf, true);
   r.finish();
   return s;
 }

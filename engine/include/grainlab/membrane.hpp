@@ -41,6 +41,10 @@ class Membrane {
   /// The contact stress of the specimen over the enclosed area; `contacts` is filled with
   /// the world's current contacts.
   StressTensor measureStress(std::vector<ContactRecord>& contacts) const;
+  /// The stress the ring applies, from the forces on its particles alone:
+  /// σ_ab = −(1/A) Σ F_a (x − c)_b over the ring's contacts with the specimen, F the force on
+  /// the specimen at contact point x. In equilibrium it equals the contact stress.
+  StressTensor boundaryStress(std::span<const ContactRecord> contacts) const;
 
  private:
   World& world_;

@@ -32,6 +32,7 @@ struct RunSummary {
   int particles = 0;
   double peakPhiMobDeg = 0;
   double voidRatioAfterConsolidation = -1;  ///< -1 if the scene has no isotropic stage
+  std::vector<std::string> notes;           ///< stages that ended at a limit, and similar
 };
 
 class RunObserver {

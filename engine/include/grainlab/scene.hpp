@@ -3,6 +3,7 @@
 // shared docs/contracts.md. Parsing never half-succeeds: it returns a whole Scene or throws
 // SceneError naming the field.
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,7 +27,8 @@ struct StageSpec {
                                   ///< cap) or axial compression rate ε̇22 (biaxial)
   double targetAxialStrain = 0.2; ///< biaxial: stop at this ε22
   std::optional<double> friction; ///< overrides material.friction during the stage
-  double maxTime = 0;             ///< s; 0 = no limit beyond the stage's own end
+  /// s: the stage ends here even if its criterion is unmet (the parser sets finite defaults)
+  double maxTime = std::numeric_limits<double>::infinity();
 };
 
 struct BoundarySpec {

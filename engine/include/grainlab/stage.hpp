@@ -21,6 +21,9 @@ class Stage {
   /// sampleSpacing().
   virtual double sampleCoordinate() const = 0;
   virtual double sampleSpacing() const = 0;
+  /// Said of a stage that ended otherwise than by its own criterion (e.g. at its time
+  /// limit); empty if it ended normally. Recorded in the run's summary.
+  virtual std::string endNote() const { return {}; }
 };
 
 }  // namespace grainlab
