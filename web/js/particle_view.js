@@ -29,6 +29,7 @@ export class ParticleView {
     this.view = null;  // {cx, cy, scale}: world point at the canvas centre, pixels per metre
     this.order = new Uint32Array(0);
     this.bucket = new Uint16Array(0);
+    this.typicalRadius = 0;
     this.pending = 0;
     this.installInteraction();
     this.resizeObserver = new ResizeObserver(() => this.resize());
@@ -46,6 +47,9 @@ export class ParticleView {
     this.shapes = shapes;
     this.order = new Uint32Array(shapes.count);
     this.bucket = new Uint16Array(shapes.count);
+    // The median bounding radius: how big a particle is on screen decides outlines and chain widths.
+    const sorted = Array.from(shapes.radius).sort((a, b) => a - b);
+    this.typicalRadius = sorted[Math.floor(sorted.length / 2)] ?? 0;
     this.view = null;
     this.requestDraw();
   }
@@ -176,7 +180,7 @@ export class ParticleView {
     const order = this.order;
     for (let i = 0; i < count; i++) order[start[bucket[i]]++] = i;
 
-    const outline = this.medianRadius() * k >= OUTLINE_MIN_PIXELS;
+    const outline = this.typicalRadius * k >= OUTLINE_MIN_PIXELS;
     ctx.lineWidth = 0.8 / k;
     ctx.lineJoin = 'round';
     for (let b = 0; b < bucketCount; b++) {
@@ -214,7 +218,7 @@ export class ParticleView {
     const { particles, contactCount, contactIndices, contactForces, maxContactForce } = this.frame;
     if (!contactCount || !(maxContactForce > 0)) return;
     // The strongest chain is as wide as 0.7 of a typical particle radius on screen.
-    const widest = Math.max(2, 0.7 * this.medianRadius() * k);
+    const widest = Math.max(2, 0.7 * this.typicalRadius * k);
     ctx.strokeStyle = CHAIN_COLOUR;
     ctx.lineCap = 'butt';
     for (let c = 0; c < CHAIN_CLASSES; c++) {
@@ -237,14 +241,6 @@ export class ParticleView {
     }
   }
 
-  medianRadius() {
-    if (this.typicalRadius === undefined || this.typicalRadiusOf !== this.shapes) {
-      const sorted = Array.from(this.shapes.radius).sort((a, b) => a - b);
-      this.typicalRadius = sorted[Math.floor(sorted.length / 2)] ?? 0;
-      this.typicalRadiusOf = this.shapes;
-    }
-    return this.typicalRadius;
-  }
 
   installInteraction() {
     this.abort = new AbortController();
