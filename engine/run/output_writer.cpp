@@ -94,6 +94,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
   s["status"] = summary.status;
   if (!summary.error.empty()) s["error"] = summary.error;
   s["wall_seconds"] = summary.wallSeconds;
+  s["sample_seconds"] = summary.sampleSeconds;
   s["steps"] = summary.steps;
   s["particles"] = summary.particles;
   s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;

@@ -1,6 +1,7 @@
 #include "run_context.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "grainlab/membrane.hpp"
@@ -62,7 +63,9 @@ void RunContext::sample(RunObserver& observer) {
   lastSampleStep_ = world_->stepCount();
   world_->checkHealth();  // a diverged state never reaches the results
   const double rate = membrane_ ? std::max(std::abs(membrane_->rate11()), std::abs(membrane_->rate22())) : 0.0;
-  const Sample s = sampler_->measure(static_cast<int>(stageIndex_), stage_->name(), rate);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
+  sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   observer.onSample(s, *world_);
   const double spacing = stage_->sampleSpacing();
   while (nextSample_ <= stage_->sampleCoordinate()) nextSample_ += spacing;

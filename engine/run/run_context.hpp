@@ -29,6 +29,7 @@ class RunContext {
   void sample(RunObserver& observer);
   double peakPhiMobDeg() const { return sampler_->peakPhiMobDeg(); }
   double voidRatioAfterConsolidation() const { return voidRatioAfterConsolidation_; }
+  double sampleSeconds() const { return sampleSeconds_; }
 
  private:
   const Scene& scene_;
@@ -40,6 +41,7 @@ class RunContext {
   double nextSample_ = 0;
   std::int64_t lastSampleStep_ = -1;
   double voidRatioAfterConsolidation_ = -1;
+  double sampleSeconds_ = 0;
 };
 
 }  // namespace grainlab

@@ -68,6 +68,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer) {
   summary.steps = world.stepCount();
   summary.peakPhiMobDeg = context->peakPhiMobDeg();
   summary.voidRatioAfterConsolidation = context->voidRatioAfterConsolidation();
+  summary.sampleSeconds = context->sampleSeconds();
   summary.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (summary.status == "completed") observer.onProgress(1.0, "done", world);
   observer.onFinish(summary, world);

@@ -50,7 +50,7 @@ void Sampler::resetStrainReference() {
   areaRef_ = membrane_->enclosedArea();
 }
 
-Sample Sampler::measure(int stageIndex, const std::string& stageName, double strainRate) {
+Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRate) {
   static const size_t cStep = column("step"), cTime = column("time"), cStage = column("stage"),
                       cAxial = column("axial_strain"), cLateral = column("lateral_strain"),
                       cVol = column("volumetric_strain"), c11 = column("sigma11"), c22 = column("sigma22"),
@@ -71,7 +71,7 @@ Sample Sampler::measure(int stageIndex, const std::string& stageName, double str
   Sample s;
   s.step = world_.stepCount();
   s.time = world_.time();
-  s.stage = stageName;
+  s.stage = stage.name;
   std::vector<double>& v = s.values;
   v.assign(seriesColumns().size(), kMissing);
   v[cStep] = static_cast<double>(s.step);
@@ -110,7 +110,7 @@ Sample Sampler::measure(int stageIndex, const std::string& stageName, double str
     if (stress.p() > 0) {
       const double phi = analysis::phiMobDeg(stress);
       v[cPhi] = phi;
-      peakPhiMob_ = std::max(peakPhiMob_, phi);
+      if (stage.type == StageSpec::Type::Biaxial) peakPhiMob_ = std::max(peakPhiMob_, phi);
       // I = ε̇ d √(ρ/p): below ~1e-3 the shearing is quasi-static.
       v[cInertial] = std::abs(strainRate) * meanDiameter_ * std::sqrt(world_.material().density / stress.p());
     }

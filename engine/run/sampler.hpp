@@ -22,8 +22,9 @@ class Sampler {
 
   /// Strains are measured from the ring's state at the last call (the start of shearing).
   void resetStrainReference();
-  /// The row for the world's current state; `stageIndex` and `stageName` label it.
-  Sample measure(int stageIndex, const std::string& stageName, double strainRate);
+  /// The row for the world's current state; `stageIndex` and `stage` label it. The peak of
+  /// φ_mob is taken over shearing samples only (during compaction σ3 ≈ 0 makes it ~90°).
+  Sample measure(int stageIndex, const StageSpec& stage, double strainRate);
   double peakPhiMobDeg() const { return peakPhiMob_; }
   double lastVoidRatio() const { return lastVoidRatio_; }
 

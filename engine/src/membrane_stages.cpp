@@ -63,7 +63,18 @@ StressServo MembraneStage::makeServo(double target, double maxRate) const {
   return servo;
 }
 
-double CompactionStage::progress() const { return std::clamp(stress_.p() / spec_.pressure, 0.0, 1.0); }
+CompactionStage::CompactionStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane)
+    : MembraneStage(spec, output, world, membrane),
+      startArea_(membrane.enclosedArea()),
+      jammedArea_(membrane.solidArea() / 0.8) {}
+
+double CompactionStage::progress() const {
+  if (done_) return 1;
+  const double span = startArea_ - jammedArea_;
+  const double byArea = span > 0 ? (startArea_ - membrane_.enclosedArea()) / span : 0.0;
+  progress_ = std::max(progress_, std::clamp(byArea, 0.0, 0.99));  // never backwards
+  return progress_;
+}
 
 void CompactionStage::control() {
   const double p = stress_.p();

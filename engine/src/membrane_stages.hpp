@@ -46,13 +46,17 @@ class MembraneStage : public Stage {
 /// pressure: the particles touch with almost no force.
 class CompactionStage : public MembraneStage {
  public:
-  using MembraneStage::MembraneStage;
+  CompactionStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
   bool finished() const override { return done_ || timedOut(); }
+  /// By area, from the start toward a jammed packing (solid fraction ~0.8): the pressure
+  /// says nothing until the particles touch.
   double progress() const override;
 
  private:
   void control() override;
   bool done_ = false;
+  double startArea_ = 0, jammedArea_ = 0;
+  mutable double progress_ = 0;
 };
 
 /// Servo-controls σ11 and σ22 to the target pressure, until p is there and the volume has

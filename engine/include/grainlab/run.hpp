@@ -28,6 +28,7 @@ struct RunSummary {
   std::string status = "completed";   ///< completed | failed | cancelled
   std::string error;                  ///< why it failed
   double wallSeconds = 0;
+  double sampleSeconds = 0;           ///< of wallSeconds, spent measuring samples (analysis)
   std::int64_t steps = 0;
   int particles = 0;
   double peakPhiMobDeg = 0;
