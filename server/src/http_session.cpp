@@ -28,30 +28,58 @@ void HttpSession::doRead() {
   parser_->body_limit(app_.options().maxBodyBytes);
   parser_->header_limit(kHeaderLimit);
   stream_.expires_after(kRequestTimeout);
+  // The header first: a body past the limit is refused before the client sends it.
+  http::async_read_header(stream_, buffer_, *parser_,
+                          beast::bind_front_handler(&HttpSession::onHeader, shared_from_this()));
+}
+
+void HttpSession::onHeader(beast::error_code ec, std::size_t) {
+  if (refused(ec)) return;
+  const auto& request = parser_->get();
+  if (!parser_->is_done() && beast::iequals(request[http::field::expect], "100-continue")) {
+    // curl waits a second for this before sending a large body.
+    auto res = std::make_shared<http::response<http::empty_body>>(http::status::continue_, request.version());
+    response_ = res;
+    http::async_write(stream_, *res, [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      self->response_.reset();
+      if (ec) return self->doClose();
+      self->readBody();
+    });
+    return;
+  }
+  readBody();
+}
+
+void HttpSession::readBody() {
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&HttpSession::onRead, shared_from_this()));
 }
 
+bool HttpSession::refused(beast::error_code ec) {
+  if (!ec) return false;
+  if (ec == http::error::end_of_stream) {
+    doClose();
+  } else if (ec == http::error::body_limit) {
+    drainAfterWrite_ = true;
+    send(errorResponse(413,
+                       "the body is larger than this server's limit of " +
+                           std::to_string(app_.options().maxBodyBytes) + " bytes",
+                       "body"),
+         11, false);
+  } else if (ec == http::error::header_limit) {
+    drainAfterWrite_ = true;
+    send(errorResponse(431, "the request headers are too large"), 11, false);
+  } else if (ec == beast::error::timeout || ec == net::error::operation_aborted || ec == net::error::eof ||
+             ec == net::error::connection_reset) {
+    doClose();
+  } else {
+    drainAfterWrite_ = true;
+    send(errorResponse(400, "malformed HTTP request: " + ec.message()), 11, false);
+  }
+  return true;
+}
+
 void HttpSession::onRead(beast::error_code ec, std::size_t) {
-  if (ec == http::error::end_of_stream) return doClose();
-  if (ec == http::error::body_limit) {
-    drainAfterWrite_ = true;
-    return send(errorResponse(413,
-                              "the body is larger than this server's limit of " +
-                                  std::to_string(app_.options().maxBodyBytes) + " bytes",
-                              "body"),
-                11, false);
-  }
-  if (ec == http::error::header_limit) {
-    drainAfterWrite_ = true;
-    return send(errorResponse(431, "the request headers are too large"), 11, false);
-  }
-  if (ec == beast::error::timeout || ec == net::error::operation_aborted || ec == net::error::eof ||
-      ec == net::error::connection_reset)
-    return doClose();
-  if (ec) {
-    drainAfterWrite_ = true;
-    return send(errorResponse(400, "malformed HTTP request: " + ec.message()), 11, false);
-  }
+  if (refused(ec)) return;
 
   auto request = parser_->release();
   if (websocket::is_upgrade(request)) {

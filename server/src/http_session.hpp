@@ -20,7 +20,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
 
  private:
   void doRead();
+  void onHeader(beast::error_code ec, std::size_t bytes);
+  void readBody();
   void onRead(beast::error_code ec, std::size_t bytes);
+  /// Answers a failed read (413, 431, 400) or closes; false if there was no error.
+  bool refused(beast::error_code ec);
   void send(const ApiResponse& response, unsigned version, bool keepAlive);
   void onWrite(bool keepAlive, beast::error_code ec, std::size_t bytes);
   /// After refusing a request mid-body: stop sending, swallow what the client still sends

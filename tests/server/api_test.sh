@@ -51,7 +51,7 @@ CSV_ROWS=$(($(wc -l <"$TMP_ROOT/rest.csv") - 1))
 check "CSV has a line per JSON row ($CSV_ROWS)" test "$CSV_ROWS" = "$ROWS"
 if [[ -x ${GRAINLAB_CLI:-} ]]; then
   echo "$TINY_SCENE" >"$TMP_ROOT/tiny.json"
-  "$GRAINLAB_CLI" run "$TMP_ROOT/tiny.json" --out "$TMP_ROOT/cli-out" 2>/dev/null
+  check "grainlab run of the same scene finishes" timeout 60 "$GRAINLAB_CLI" run "$TMP_ROOT/tiny.json" --out "$TMP_ROOT/cli-out" 2>/dev/null
   check "REST CSV is byte for byte the CLI's series.csv" cmp "$TMP_ROOT/rest.csv" "$TMP_ROOT/cli-out/series.csv"
 fi
 req GET "/api/runs/$ID/frames"
@@ -111,6 +111,13 @@ expect "past the particle limit: 503" 503 '"error":"this server runs at most 100
 head -c 200000 /dev/zero | tr '\0' ' ' >"$TMP_ROOT/big.json"
 req POST /api/runs --data-binary "@$TMP_ROOT/big.json"
 expect "body past the limit: 413" 413 '"field":"body"'
+T0=$(date +%s%N)
+req POST /api/runs -H 'Expect: 100-continue' --data-binary "@$TMP_ROOT/big.json"
+expect "413 before the body is sent (Expect: 100-continue)" 413 '"field":"body"'
+req POST /api/runs -H 'Expect: 100-continue' --data "$TINY_SCENE"
+ELAPSED_MS=$((($(date +%s%N) - T0) / 1000000))
+expect "Expect: 100-continue is answered" 201
+check "without curl's one-second wait (${ELAPSED_MS} ms for both)" test "$ELAPSED_MS" -lt 900
 req GET /api/runs
 check "no bad request stored a run" test "$(json 'b.runs.filter(r => r.name === "x" || r.preset === "no-such").length')" = 0
 
