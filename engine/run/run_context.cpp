@@ -11,7 +11,9 @@
 namespace grainlab {
 
 RunContext::RunContext(const Scene& scene) : scene_(scene) {
-  world_ = std::make_unique<World>(scene.material);
+  WorldSettings settings;
+  settings.threads = scene.solver.threads;
+  world_ = std::make_unique<World>(scene.material, settings);
   for (const ParticleSpec& p : scene.particles) world_->addParticle(p);
   if (scene.assembly) {
     const Specimen specimen = generateSpecimen(*scene.assembly, scene.seed);

@@ -41,7 +41,7 @@ Scene pileScene(int columns, int rows, bool polygons, std::uint64_t seed) {
                  Wall{Vec2(width, 0), Vec2(-1, 0)}};
   StageSpec settle;
   settle.name = "settling";
-  settle.duration = 0.15;  // s: long enough for the pile to come to rest
+  settle.duration = 0.3;  // s: long enough for both piles to come to rest
   scene.stages = {settle};
   return scene;
 }

@@ -114,6 +114,20 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
       p.axis = previous_[o].axis;
     }
   }
+  // Each particle's pairs, in pair order (a counting sort over the sorted pair list).
+  adjacencyStart_.assign(static_cast<size_t>(n) + 1, 0);
+  for (const PairState& p : pairs_) {
+    ++adjacencyStart_[static_cast<size_t>(p.i) + 1];
+    if (p.j >= 0) ++adjacencyStart_[static_cast<size_t>(p.j) + 1];
+  }
+  for (int k = 0; k < n; ++k) adjacencyStart_[k + 1] += adjacencyStart_[k];
+  adjacency_.resize(static_cast<size_t>(adjacencyStart_[n]));
+  std::vector<int> fill(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    const PairState& p = pairs_[k];
+    adjacency_[static_cast<size_t>(fill[p.i]++)] = static_cast<int>(2 * k);
+    if (p.j >= 0) adjacency_[static_cast<size_t>(fill[p.j]++)] = static_cast<int>(2 * k + 1);
+  }
   valid_ = true;
 }
 

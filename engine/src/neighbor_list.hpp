@@ -33,6 +33,10 @@ class NeighborList {
   void invalidate() { valid_ = false; }
 
   std::vector<PairState>& pairs() { return pairs_; }
+  /// For each particle k, entries [adjacencyStart()[k], adjacencyStart()[k+1]) of
+  /// adjacency() name its pairs in pair order: pair index × 2, plus 1 where k is the pair's j.
+  const std::vector<int>& adjacencyStart() const { return adjacencyStart_; }
+  const std::vector<int>& adjacency() const { return adjacency_; }
   const std::vector<PairState>& pairs() const { return pairs_; }
 
  private:
@@ -45,6 +49,7 @@ class NeighborList {
   std::vector<PairState> pairs_;
   std::vector<PairState> previous_;  // scratch for carrying history over
   std::vector<int> cellStart_, cellItems_, candidates_;
+  std::vector<int> adjacencyStart_, adjacency_;
 };
 
 }  // namespace grainlab

@@ -116,6 +116,7 @@ SolverSpec parseSolver(const nlohmann::json& j) {
   }
   s.timestep = r.number("timestep", 0, 0, kInf);
   s.timestepSafety = r.number("timestep_safety", s.timestepSafety, 0, 10, true);
+  s.threads = static_cast<int>(r.integer("threads", s.threads, 1, 64));
   r.finish();
   return s;
 }

@@ -12,6 +12,7 @@
 #include "grainlab/errors.hpp"
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
+#include "worker_pool.hpp"
 
 namespace grainlab {
 namespace {
@@ -24,7 +25,10 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 }  // namespace
 
 World::World(const Material& material, WorldSettings settings)
-    : material_(material), settings_(settings), neighbors_(std::make_unique<NeighborList>()) {}
+    : material_(material), settings_(settings), neighbors_(std::make_unique<NeighborList>()) {
+  if (settings_.threads < 1) throw std::invalid_argument("threads must be at least 1");
+  if (settings_.threads > 1) pool_ = std::make_unique<WorkerPool>(settings_.threads);
+}
 
 World::~World() = default;
 
@@ -210,52 +214,101 @@ ContactGeometry World::pairGeometry(const PairState& p, int* axis) const {
   return g;
 }
 
+// The force of one pair: F on j from i (−F on i), and the torques it exerts about each
+// centroid. Returns false if the pair is not touching (its history is then cleared).
 template <class Law, bool kDiscsOnly>
-void World::pairForces(const Law& law) {
-  const double dt = timestep();
+inline bool World::pairForce(PairState& p, const Law& law, double dt, Vec2& F, double& ti, double& tj) {
+  const int i = p.i, j = p.j;
   const Vec2* x = position_.data();
   const Vec2* v = velocity_.data();
   const double* w = spin_.data();
   const double* radius = boundingRadius_.data();
-  Vec2* f = force_.data();
-  double* tau = torque_.data();
-  for (PairState& p : neighbors_->pairs()) {
-    const int i = p.i, j = p.j;
-    ContactGeometry g;
-    if constexpr (kDiscsOnly) {
-      g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
-                 : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
-    } else {
-      g = pairGeometry(p, &p.axis);
-    }
-    if (g.overlap <= 0) {
-      p.history = 0;
-      p.fn = p.ft = p.overlap = 0;
-      continue;
-    }
-    const Vec2& n = g.normal;
-    const Vec2 t = perp(n);
-    const Vec2 ri = g.point - x[i];
-    Vec2 dv = -(v[i] + cross(w[i], ri));
-    Vec2 rj = Vec2::Zero();
-    if (j >= 0) {
-      rj = g.point - x[j];
-      dv += v[j] + cross(w[j], rj);
-    }
-    const ContactMotion motion{g.overlap, dv.dot(n), dv.dot(t)};
-    const double fn = law.normal.force(motion, p.dampN);
-    const double ft = law.tangential.force(fn, motion, p.dampT, dt, p.history);
-    const Vec2 F = fn * n + ft * t;  // on j from i
-    f[i] -= F;
-    tau[i] -= cross(ri, F);
-    if (j >= 0) {
-      f[j] += F;
-      tau[j] += cross(rj, F);
-    }
-    p.fn = fn;
-    p.ft = ft;
-    p.overlap = g.overlap;
+  ContactGeometry g;
+  if constexpr (kDiscsOnly) {
+    g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
+               : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
+  } else {
+    g = pairGeometry(p, &p.axis);
   }
+  if (g.overlap <= 0) {
+    p.history = 0;
+    p.fn = p.ft = p.overlap = 0;
+    return false;
+  }
+  const Vec2& n = g.normal;
+  const Vec2 t = perp(n);
+  const Vec2 ri = g.point - x[i];
+  Vec2 dv = -(v[i] + cross(w[i], ri));
+  Vec2 rj = Vec2::Zero();
+  if (j >= 0) {
+    rj = g.point - x[j];
+    dv += v[j] + cross(w[j], rj);
+  }
+  const ContactMotion motion{g.overlap, dv.dot(n), dv.dot(t)};
+  const double fn = law.normal.force(motion, p.dampN);
+  const double ft = law.tangential.force(fn, motion, p.dampT, dt, p.history);
+  F = fn * n + ft * t;
+  ti = cross(ri, F);
+  tj = cross(rj, F);
+  p.fn = fn;
+  p.ft = ft;
+  p.overlap = g.overlap;
+  return true;
+}
+
+template <class Law, bool kDiscsOnly>
+void World::pairForces(const Law& law) {
+  const double dt = timestep();
+  std::vector<PairState>& pairs = neighbors_->pairs();
+  if (!pool_) {
+    // Serial: accumulate as we go.
+    Vec2* f = force_.data();
+    double* tau = torque_.data();
+    Vec2 F;
+    double ti, tj;
+    for (PairState& p : pairs) {
+      if (!pairForce<Law, kDiscsOnly>(p, law, dt, F, ti, tj)) continue;
+      f[p.i] -= F;
+      tau[p.i] -= ti;
+      if (p.j >= 0) {
+        f[p.j] += F;
+        tau[p.j] += tj;
+      }
+    }
+    return;
+  }
+  // Parallel: each pair's force goes to its own slot, then each particle gathers its pairs
+  // in pair order. Every particle sees the same additions in the same order as the serial
+  // loop above, so the result is bit-identical whatever the number of threads.
+  pairForce_.resize(pairs.size());
+  pool_->parallelFor(static_cast<int>(pairs.size()), [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      PairForce& out = pairForce_[static_cast<size_t>(k)];
+      out.touching = pairForce<Law, kDiscsOnly>(pairs[static_cast<size_t>(k)], law, dt, out.force, out.torqueI, out.torqueJ);
+    }
+  });
+  const std::vector<int>& start = neighbors_->adjacencyStart();
+  const std::vector<int>& entries = neighbors_->adjacency();
+  pool_->parallelFor(size(), [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      Vec2 f = force_[k];
+      double tau = torque_[k];
+      for (int e = start[k]; e < start[k + 1]; ++e) {
+        const int pairIndex = entries[static_cast<size_t>(e)] >> 1;
+        const PairForce& pf = pairForce_[static_cast<size_t>(pairIndex)];
+        if (!pf.touching) continue;
+        if (entries[static_cast<size_t>(e)] & 1) {  // k is the pair's j
+          f += pf.force;
+          tau += pf.torqueJ;
+        } else {
+          f -= pf.force;
+          tau -= pf.torqueI;
+        }
+      }
+      force_[k] = f;
+      torque_[k] = tau;
+    }
+  });
 }
 
 void World::assignDamping() {

@@ -39,6 +39,20 @@ TEST(Determinism, QuickPresetRepeatsBitForBit) {
   EXPECT_GT(a.rows.size(), 1000u);
 }
 
+TEST(Determinism, ThreadCountDoesNotChangeABit) {
+  for (const char* preset : {"circular-quick", "elongated-random-quick"}) {
+    Scene scene = parseScene(presetScene(preset));
+    scene.stages.resize(1);  // compaction: thousands of steps with contacts forming
+    scene.stages[0].maxTime = 0.05;
+    Recorder serial, parallel;
+    ASSERT_EQ(runScene(scene, serial).status, "completed");
+    scene.solver.threads = 2;
+    ASSERT_EQ(runScene(scene, parallel).status, "completed");
+    EXPECT_EQ(serial.hash, parallel.hash) << preset;
+    EXPECT_EQ(serial.rows, parallel.rows) << preset;
+  }
+}
+
 TEST(Determinism, DifferentSeedGivesDifferentSpecimen) {
   Scene scene = parseScene(presetScene("circular-quick"));
   StageSpec free;

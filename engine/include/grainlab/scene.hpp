@@ -41,6 +41,7 @@ struct SolverSpec {
   Engine engine = Engine::Dem;
   double timestep = 0;            ///< s; 0 = timestepSafety × critical timestep
   double timestepSafety = 0.2;
+  int threads = 1;                ///< force computation threads; results do not depend on it
   int box2dVelocityIterations = 8;
   int box2dPositionIterations = 3;
 };

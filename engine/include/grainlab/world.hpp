@@ -18,6 +18,7 @@ namespace grainlab {
 
 class NeighborList;
 class PolygonCollider;
+class WorkerPool;
 struct PairState;
 struct ContactGeometry;
 
@@ -25,6 +26,9 @@ struct WorldSettings {
   /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
   /// in the neighbour list, which is rebuilt when a particle has moved half of it.
   double skinFraction = 0.3;
+  /// Threads for the force computation (the caller's included). Results are bit-identical
+  /// for any count: the parallel path adds each particle's forces in the serial order.
+  int threads = 1;
 };
 
 class World {
@@ -108,6 +112,8 @@ class World {
   void applyLocalDamping();
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
+  template <class Law, bool kDiscsOnly>
+  bool pairForce(PairState& pair, const Law& law, double dt, Vec2& force, double& torqueI, double& torqueJ);
 
   Material material_;
   WorldSettings settings_;
@@ -136,6 +142,13 @@ class World {
 
   std::unique_ptr<NeighborList> neighbors_;
   std::unique_ptr<PolygonCollider> polygonCollider_;
+  std::unique_ptr<WorkerPool> pool_;     // null when serial
+  struct PairForce {
+    Vec2 force = Vec2::Zero();            // on j from i
+    double torqueI = 0, torqueJ = 0;      // r × F about each centroid
+    bool touching = false;
+  };
+  std::vector<PairForce> pairForce_;     // per pair, for the parallel gather
   Profile profile_;
 };
 
