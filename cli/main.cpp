@@ -12,6 +12,7 @@
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
 #include "paper_command.hpp"
+#include "tradeoff_command.hpp"
 #ifdef GRAINLAB_HAS_SERVER
 #include "grainlab/server/serve.hpp"
 #endif
@@ -27,6 +28,7 @@ int usage(std::ostream& out, int code) {
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N]            speed on settled piles of discs and polygons\n"
          "  paper --out DIR [--quick] [--jobs N]  the paper's six tests and report.html\n"
+         "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "                               the HTTP/WebSocket server and dashboard\n"
@@ -102,6 +104,7 @@ int main(int argc, char** argv) {
     }
     if (command == "bench") return grainlab::benchCommand(args);
     if (command == "paper") return grainlab::paperCommand(args);
+    if (command == "tradeoff") return grainlab::tradeoffCommand(args);
 #ifdef GRAINLAB_HAS_SERVER
     if (command == "serve") return serveCommand(args);
 #endif
