@@ -31,8 +31,15 @@ TEST(SeriesStats, AxialAveragesSkipMissingValues) {
   EXPECT_LT(std::min(m, 180 - m), 1e-9);
   EXPECT_NEAR(noiseFloor(2500), 0.0354, 1e-4);
   EXPECT_NEAR(finiteMedian({3, NAN, 1, 2}), 2, 1e-12);
-  EXPECT_NEAR(leastSquaresSlope({0, 1, 2, 3}, {1, 3, 5, 7}), 2, 1e-12);
-  EXPECT_TRUE(std::isnan(leastSquaresSlope({1}, {1})));
+  const LinearTrend exact = linearTrend({0, 1, 2, 3}, {1, 3, 5, 7});
+  EXPECT_NEAR(exact.slope, 2, 1e-12);
+  EXPECT_NEAR(exact.standardError, 0, 1e-12);
+  EXPECT_TRUE(exact.risesBeyond(2));
+  // y = 1, 3, 1, 3, ...: a slope well inside its error.
+  const LinearTrend noisy = linearTrend({0, 1, 2, 3, 4, 5}, {1, 3, 1, 3, 1, 3});
+  EXPECT_GT(noisy.slope, 0);
+  EXPECT_FALSE(noisy.risesBeyond(2));
+  EXPECT_TRUE(std::isnan(linearTrend({1, 2}, {1, 2}).slope));
 }
 
 TEST(OmegaDecay, DecayingOmegaHolds) {
@@ -52,6 +59,13 @@ TEST(OmegaDecay, RisingAgainAfterThePeakDoesNotHold) {
   // the end than at the start, but not decreasing after the peak.
   setColumn(a, "omega_macro_deg", [](double e) { return e <= 0.1 ? 10 - 90 * e : 1 + 30 * (e - 0.1); });
   EXPECT_EQ(findOmegaDecay(one(a)).verdict, Verdict::DoesNotHold);
+}
+
+TEST(OmegaDecay, FastDecayThenNoiseAroundZeroHolds) {
+  AssemblyResult a = syntheticRun(AssemblyKind::Bedding, 30);
+  // Gone within a few % strain, then ±0.8° of scatter: a slope after the peak within its noise.
+  setColumn(a, "omega_macro_deg", [](double e) { return 7 * std::exp(-e / 0.01) + 0.8 * std::sin(900 * e); });
+  EXPECT_EQ(findOmegaDecay(one(a)).verdict, Verdict::Holds) << findOmegaDecay(one(a)).checks.at(0).measured;
 }
 
 TEST(OmegaDecay, OmegaThatIsNeverThereIsInconclusive) {

@@ -15,6 +15,7 @@ struct RunFacts {
   int minParticles = 0, maxParticles = 0;  // including the membrane's ring
   double minContacts = 0, maxFloor = 0;    // at the start of shearing
   double servoError = 0;                   // max |σ11 − 300 kPa| / 300 kPa over the shearing
+  double minVoidRatio = NAN, maxVoidRatio = NAN;  // after consolidation
 };
 
 RunFacts factsOf(std::span<const AssemblyResult> runs) {
@@ -29,6 +30,11 @@ RunFacts factsOf(std::span<const AssemblyResult> runs) {
     f.minContacts = first ? contacts : std::min(f.minContacts, contacts);
     f.maxFloor = std::max(f.maxFloor, noiseFloor(contacts));
     first = false;
+    const double e = a.summary.voidRatioAfterConsolidation;
+    if (e >= 0) {
+      f.minVoidRatio = std::isnan(f.minVoidRatio) ? e : std::min(f.minVoidRatio, e);
+      f.maxVoidRatio = std::isnan(f.maxVoidRatio) ? e : std::max(f.maxVoidRatio, e);
+    }
     for (double s : a.shearing.column("sigma11")) {
       if (std::isfinite(s)) f.servoError = std::max(f.servoError, std::abs(s - 300e3) / 300e3);
     }
@@ -82,17 +88,24 @@ std::string reasons(const Finding& finding, const RunFacts& facts) {
              "The grading (count fractions solved for Cu = 1.35 and Cc = 1.2) and six-vertex polygons inscribed in "
              "the ellipse are our interpretation of the paper's particles. " + sizeSentence(facts);
     case 5:
-      return "ω is the angle between two nearly coaxial directions, a few degrees at most, so it is sensitive to "
-             "noise: " + servoSentence(facts) + sizeSentence(facts);
+      return "Once the stress has turned to the loading axis, ω is a small angle between two nearly coaxial "
+             "directions and easily moved by noise (compare how soon it halves with the paper, where it falls over "
+             "the whole test). " + servoSentence(facts) + sizeSentence(facts);
     case 6:
       return "Eq. (7) drops third-order products of the a_k, a fraction of a degree for realistic states; Eq. (10) "
-             "is the unweighted mean of θ_c, θ_n, θ_t and is right only when a_c ≈ a_n ≈ a_t; Eq. (11)'s error is "
-             "first order in a_ln and a_lt, so it fails only where those are well above the noise and their "
-             "directions differ from θσ. " + sizeSentence(facts);
+             "is the unweighted mean of θ_c, θ_n, θ_t and is right only when a_c ≈ a_n ≈ a_t. Eq. (11)'s error is "
+             "first order in a_ln and a_lt, but only the part of A_ln + A_lt at an angle to the other terms turns "
+             "θσ: for α = 0° and 90° the branch vectors lie along the loading axes (θ_ln, θ_lt ≈ α), so dropping "
+             "them changes the size of the sum, not its direction, and Eq. (11) cannot fail there by symmetry; "
+             "only α = 30° and 60° can show the paper's effect. " + sizeSentence(facts);
     case 7:
-      return "Our void ratio is the membrane's enclosed area less the particles' area, so voids along the membrane "
-             "count; our grading interpretation, the six-vertex polygons and the frictionless compaction set how "
-             "densely the particles pack; the paper's DISC/POLY preparation is described only in outline. " +
+      return "Solid fractions 1/(1 + e): ours " + fixed(1 / (1 + facts.maxVoidRatio), 3) + "-" +
+             fixed(1 / (1 + facts.minVoidRatio), 3) + ", the paper's 0.780-0.792. Our compaction stage runs "
+             "without friction up to 3 kPa, which already brings the particles to a random close packing "
+             "before friction is switched on for consolidation; the paper's specimens ended looser, so its "
+             "initial compaction likely stopped earlier. Our void ratio is the membrane's enclosed area less "
+             "the particles' area, which if anything counts extra void along the membrane; our grading "
+             "interpretation and six-vertex polygons also set how densely the particles pack. " +
              sizeSentence(facts);
     default: return "";
   }

@@ -315,37 +315,54 @@ Finding findOmegaDecay(std::span<const AssemblyResult> runs) {
   f.number = 5;
   f.claim = "The non-coaxiality ω decreases toward zero as shearing goes on, for every assembly, also after the "
             "peak of φ_mob (Fig. 14).";
-  f.criterion = "mean |ω_macro| over the last quarter of the shearing below that over the first quarter, and the "
-                "least-squares trend of |ω| from the peak of φ_mob on not rising (judged when at least " +
-                std::to_string(kMinSamplesAfterPeak) + " samples follow the peak); samples with φ_mob < " +
-                deg(kMinPhiMobDeg) + " left out; an early |ω| below " + deg(kOmegaSignalDeg) + " is inconclusive";
+  f.criterion = "mean |ω_macro| over the last quarter of the shearing below that at its onset (the first " +
+                fixed(kOnsetFraction * 100, 0) + " % of the final strain), and |ω| not rising after the peak of "
+                "φ_mob (least-squares slope from the peak on less than " + fixed(kTrendSigmas, 0) +
+                " standard errors above zero, judged when at least " + std::to_string(kMinSamplesAfterPeak) +
+                " samples follow the peak); samples with φ_mob < " + deg(kMinPhiMobDeg) +
+                " left out; inconclusive when |ω| stays below " + deg(kOmegaSignalDeg) +
+                " at both onset and end, and an end more than " + deg(kOmegaSignalDeg) +
+                " above the onset does not hold";
   const auto chosen = select(runs, anyKind);
   if (chosen.empty()) return noneRan(std::move(f), "all");
   for (const AssemblyResult* a : chosen) {
     const auto omega = meaningfulAbs(*a, "omega_macro_deg");
-    const double early = finiteMean(overStrainFraction(*a, omega, 0.0, 0.25));
+    const double onset = finiteMean(overStrainFraction(*a, omega, 0.0, kOnsetFraction));
     const double late = finiteMean(overStrainFraction(*a, omega, 0.75, 1.0));
     const auto phi = a->shearing.column("phi_mob_deg"), strain = a->shearing.column("axial_strain");
     size_t peak = 0;
     for (size_t r = 0; r < phi.size(); ++r) {
       if (std::isfinite(phi[r]) && !(phi[r] <= phi[peak])) peak = r;
     }
+    // How soon |ω| first falls to half its onset value: the pace of the decay.
+    double halfStrain = std::nan("");
+    for (size_t r = 0; r < omega.size() && std::isfinite(onset); ++r) {
+      if (std::isfinite(omega[r]) && omega[r] <= onset / 2) {
+        halfStrain = strain[r];
+        break;
+      }
+    }
     // After the peak: the trend of |ω| over the samples from the peak on, when there are enough.
     std::vector<double> afterStrain, afterOmega;
     for (size_t r = peak; r < omega.size(); ++r) {
-      if (std::isfinite(omega[r])) afterStrain.push_back(strain[r]), afterOmega.push_back(omega[r]);
+      if (std::isfinite(omega[r])) afterStrain.push_back(strain[r] * 100), afterOmega.push_back(omega[r]);
     }
     const bool testable = afterOmega.size() >= kMinSamplesAfterPeak;
-    const double slope = testable ? leastSquaresSlope(afterStrain, afterOmega) : std::nan("");
+    const LinearTrend trend = testable ? linearTrend(afterStrain, afterOmega) : LinearTrend{std::nan(""), std::nan("")};
     Check c{a->label(), "", Verdict::Inconclusive};
-    c.measured = "|ω| first quarter " + deg(early) + ", last quarter " + deg(late) + "; φ_mob peaks at " +
-                 fixed(phi[peak], 1) + "° at ε22 = " + fixed(strain[peak] * 100, 1) + " %" +
-                 (testable ? ", |ω| after it trends " + fixed(slope / 100, 2) + "° per % strain"
+    c.measured = "|ω| at onset " + deg(onset) + ", last quarter " + deg(late) +
+                 (std::isfinite(halfStrain) ? ", half the onset value by ε22 = " + fixed(halfStrain * 100, 1) + " %" : "") +
+                 "; φ_mob peaks at " + fixed(phi[peak], 1) + "° at ε22 = " + fixed(strain[peak] * 100, 1) + " %" +
+                 (testable ? ", |ω| after it trends " + fixed(trend.slope, 2) + " ± " + fixed(trend.standardError, 2) +
+                                 "° per % strain"
                            : ", too near the end to judge after it");
-    if (std::isfinite(early) && std::isfinite(late) && early >= kOmegaSignalDeg) {
-      const bool decreases = late < early;
-      const bool afterPeak = !testable || !(slope > 0);
-      c.verdict = decreases && afterPeak ? Verdict::Holds : Verdict::DoesNotHold;
+    if (std::isfinite(onset) && std::isfinite(late)) {
+      const bool signal = onset >= kOmegaSignalDeg || late >= kOmegaSignalDeg;
+      const bool grows = late > onset + kOmegaSignalDeg;
+      const bool decreases = late < onset;
+      const bool afterPeak = !testable || !trend.risesBeyond(kTrendSigmas);
+      if (grows) c.verdict = Verdict::DoesNotHold;
+      else if (signal) c.verdict = decreases && afterPeak ? Verdict::Holds : Verdict::DoesNotHold;
     }
     f.checks.push_back(c);
   }

@@ -33,21 +33,31 @@ double finiteMax(const std::vector<double>& values) {
   return best;
 }
 
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y) {
+LinearTrend linearTrend(const std::vector<double>& x, const std::vector<double>& y) {
+  const LinearTrend none{std::nan(""), std::nan("")};
   double sx = 0, sy = 0;
   int n = 0;
-  for (size_t k = 0; k < std::min(x.size(), y.size()); ++k) {
+  const size_t size = std::min(x.size(), y.size());
+  for (size_t k = 0; k < size; ++k) {
     if (std::isfinite(x[k]) && std::isfinite(y[k])) sx += x[k], sy += y[k], ++n;
   }
-  if (n < 2) return std::nan("");
+  if (n < 3) return none;
   const double mx = sx / n, my = sy / n;
   double sxx = 0, sxy = 0;
-  for (size_t k = 0; k < std::min(x.size(), y.size()); ++k) {
+  for (size_t k = 0; k < size; ++k) {
     if (!std::isfinite(x[k]) || !std::isfinite(y[k])) continue;
     sxx += (x[k] - mx) * (x[k] - mx);
     sxy += (x[k] - mx) * (y[k] - my);
   }
-  return sxx > 0 ? sxy / sxx : std::nan("");
+  if (!(sxx > 0)) return none;
+  const double slope = sxy / sxx, intercept = my - slope * mx;
+  double residuals = 0;
+  for (size_t k = 0; k < size; ++k) {
+    if (!std::isfinite(x[k]) || !std::isfinite(y[k])) continue;
+    const double r = y[k] - (intercept + slope * x[k]);
+    residuals += r * r;
+  }
+  return {slope, std::sqrt(residuals / (n - 2) / sxx)};
 }
 
 double axialDistanceDeg(double aDeg, double bDeg) { return std::abs(analysis::wrapAxialDeg(aDeg - bDeg)); }

@@ -11,9 +11,16 @@ double finiteMean(const std::vector<double>& values);
 double finiteMedian(std::vector<double> values);
 /// Largest finite value; NaN if there are none.
 double finiteMax(const std::vector<double>& values);
-/// Least-squares slope dy/dx over the pairs where both are finite; NaN with fewer than two
+/// A least-squares line's slope dy/dx and its standard error (units of y per unit of x).
+struct LinearTrend {
+  double slope = 0;
+  double standardError = 0;
+  /// The slope exceeds zero by more than `sigmas` standard errors.
+  bool risesBeyond(double sigmas) const { return slope - sigmas * standardError > 0; }
+};
+/// The least-squares line through the pairs where both are finite; NaNs with fewer than three
 /// such pairs or no spread in x.
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y);
+LinearTrend linearTrend(const std::vector<double>& x, const std::vector<double>& y);
 /// |a − b| for axial directions (degrees), in [0, 90].
 double axialDistanceDeg(double aDeg, double bDeg);
 /// Circular mean of axial directions (degrees) through e^{2iθ}, in [0, 180); NaN if none is finite.
