@@ -57,22 +57,24 @@ std::vector<double> whereSheared(const AssemblyResult& a, const std::string& col
   return out;
 }
 
-FigurePanel panel(ChartSpec spec) {
-  if (spec.xMin && *spec.xMin == 0 && !spec.xMax) {
-    // Strain axes end where the test ends (20 %), not at the next whole tick beyond it.
-    double end = 0;
-    for (const LineSeries& s : spec.series) {
-      for (double x : s.x) {
-        if (std::isfinite(x)) end = std::max(end, x);
-      }
-    }
-    if (end > 0) spec.xMax = end;
-  }
+FigurePanel panel(const ChartSpec& spec) {
   FigurePanel p;
   p.name = spec.id;
   p.inlineSvg = renderLineChart(spec, false);
   p.fileSvg = renderLineChart(spec, true);
   return p;
+}
+
+// Strain axes end where the test ends (20 %), not at the next whole tick beyond it.
+FigurePanel strainPanel(ChartSpec spec) {
+  double end = 0;
+  for (const LineSeries& s : spec.series) {
+    for (double x : s.x) {
+      if (std::isfinite(x)) end = std::max(end, x);
+    }
+  }
+  if (end > 0 && !spec.xMax) spec.xMax = end;
+  return panel(spec);
 }
 
 ChartSpec strainChart(const std::string& id, const std::string& title, const std::string& yLabel) {
@@ -116,7 +118,7 @@ Figure stressAsymmetry(std::span<const AssemblyResult> runs) {
     }
     chart.series.push_back(std::move(line));
   }
-  f.panels.push_back(panel(chart));
+  f.panels.push_back(strainPanel(chart));
   return f;
 }
 
@@ -147,8 +149,8 @@ Figure anisotropyOf(std::span<const AssemblyResult> runs, AssemblyKind kind, con
       dirs.series.push_back({"θ_" + termLabel(t), percent(strain), meaningful(*a, t), "", false, false});
     }
   }
-  f.panels.push_back(panel(coef));
-  f.panels.push_back(panel(dirs));
+  f.panels.push_back(strainPanel(coef));
+  f.panels.push_back(strainPanel(dirs));
   return f;
 }
 
@@ -172,8 +174,8 @@ Figure beddingTerm(std::span<const AssemblyResult> runs, int number, const std::
     coef.series.push_back({a->label(), percent(strain), a->shearing.column("a_" + term), "", false, false});
     dirs.series.push_back({a->label(), percent(strain), meaningful(*a, term), "", false, false});
   }
-  f.panels.push_back(panel(coef));
-  f.panels.push_back(panel(dirs));
+  f.panels.push_back(strainPanel(coef));
+  f.panels.push_back(strainPanel(dirs));
   return f;
 }
 
@@ -229,7 +231,7 @@ Figure omegaVersusStrain(std::span<const AssemblyResult> runs) {
     chart.series.push_back({"Eq. (7)", x, whereSheared(*a, "omega_micro_deg"), "#D55E00", false, false});
     chart.series.push_back({"Eq. (10)", x, whereSheared(*a, "omega_eq10_deg"), "#009E73", true, false});
     chart.series.push_back({"Eq. (11)", x, whereSheared(*a, "omega_eq11_deg"), "#0072B2", true, false});
-    f.panels.push_back(panel(chart));
+    f.panels.push_back(strainPanel(chart));
   }
   return f;
 }
