@@ -1,8 +1,9 @@
 #pragma once
-// `grainlab tradeoff --out DIR [--quick] [--jobs N] [--presets A,B]`: speed against accuracy.
+// `grainlab tradeoff --out DIR [--quick] [--jobs N] [--presets A,B] [--cost cpu|wall]`:
+// speed against accuracy.
 // Sweeps timestep safety, shearing inertial number, polygon vertex count, sampling interval
 // (and the engine, where the parser takes "box2d") on quick presets; measures each run's
-// wall time and its errors against the most accurate reference run; writes
+// wall and CPU time and its errors against the most accurate reference run; writes
 // DIR/tradeoff.csv, DIR/pareto.svg and DIR/scenes/*.json (docs/speed-accuracy.md).
 #include <string>
 #include <vector>

@@ -10,7 +10,7 @@ struct ParetoPoint {
   double seconds = 0;      ///< cost, s (> 0 to be drawn)
   double error = 0;        ///< error, in the panel's unit (finite to be drawn)
   std::string label;       ///< short text beside the marker
-  std::string axis;        ///< the sweep axis: sets the colour and the legend entry
+  std::string axis;        ///< the sweep axis (or "baseline"): sets the colour and the legend entry
   bool onFront = false;    ///< part of the Pareto front
 };
 
