@@ -103,9 +103,13 @@ double World::criticalTimestep() const {
   double dt = std::numeric_limits<double>::infinity();
   const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
   for (int k = 0; k < size(); ++k) {
+    // A force at the bounding radius R, off the centre's line, moves the contact point as if
+    // the mass were m / (1 + m R²/I). A disc's normal force passes through its centre; a
+    // polygon's need not.
     const double r = boundingRadius_[k];
     const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
-    const double stiffest = std::max(kn, kt * rotational);
+    const double normal = shape_[k] == ShapeKind::Disc ? kn : kn * rotational;
+    const double stiffest = std::max(normal, kt * rotational);
     dt = std::min(dt, 2.0 * std::sqrt(0.5 * mass_[k] / stiffest));
   }
   return dt;

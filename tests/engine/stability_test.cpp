@@ -58,5 +58,14 @@ TEST(Stability, CriticalTimestepMatchesTheStiffestLightestContact) {
   EXPECT_NEAR(world.timestep(), 0.2 * world.criticalTimestep(), 1e-18);
 }
 
+TEST(Stability, PolygonCriticalTimestepSeesTheNormalSpringThroughRotation) {
+  // A square of side s: I = m s²/6 and R = s/√2, so 1 + m R²/I = 4 for both springs.
+  const double side = 0.004, kn = 1e8, kt = 5e7;
+  World world(test::material(kn, 1.0, 0.5, kt));
+  world.addParticle(test::box(side, side, {0, 0}));
+  const double m = 2650 * side * side;
+  EXPECT_NEAR(world.criticalTimestep(), 2 * std::sqrt(0.5 * m / (4 * kn)), 1e-15);
+}
+
 }  // namespace
 }  // namespace grainlab

@@ -53,8 +53,9 @@ class World {
   double timestep() const;
   void setTimestepSafety(double safety) { timestepSafety_ = safety; }
   /// 2·√(m*/k) for the stiffest, lightest contact: m* = m/2 for the lightest particle and
-  /// k = max(k_n, k_t·(1 + m R²/I)), the tangential spring seen through the particle's
-  /// rotational inertia at its bounding radius R. Explicit integration is unstable above it.
+  /// k the stiffest spring seen through the particle's rotational inertia at its bounding
+  /// radius R: k_t·(1 + m R²/I), and for polygons also k_n·(1 + m R²/I) (their normal forces
+  /// need not pass through the centre). Explicit integration is unstable above it.
   double criticalTimestep() const;
 
   /// Prescribed motion of a kinematic particle (ignored for others).
