@@ -27,7 +27,7 @@ int usage(std::ostream& out, int code) {
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N]            speed on settled piles of discs and polygons\n"
-         "  paper --out DIR [--quick] [--jobs N]  the paper's six tests and report.html\n"
+         "  paper --out DIR [--quick] [--jobs N] [--report-only]  the paper's six tests, report.html\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"

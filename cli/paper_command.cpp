@@ -16,6 +16,8 @@ int paperCommand(const std::vector<std::string>& args) {
       options.outDir = args[++k];
     } else if (args[k] == "--quick") {
       options.quick = true;
+    } else if (args[k] == "--report-only") {
+      options.reportOnly = true;
     } else if (args[k] == "--jobs" && hasValue) {
       const std::string& value = args[++k];
       if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || std::stoul(value) == 0) {
@@ -25,7 +27,7 @@ int paperCommand(const std::vector<std::string>& args) {
       options.jobs = static_cast<unsigned>(std::stoul(value));
     } else {
       std::cerr << "grainlab paper: unexpected argument " << args[k] << "\n"
-                << "usage: grainlab paper --out DIR [--quick] [--jobs N]\n";
+                << "usage: grainlab paper --out DIR [--quick] [--jobs N] [--report-only]\n";
       return 2;
     }
   }

@@ -1,5 +1,6 @@
 // Runs side by side compute what they compute alone; concurrency is capped by the hardware;
 // a bad preset fails by itself with its reason.
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "grainlab/report/parallel_runs.hpp"
+#include "grainlab/report/run_loader.hpp"
 
 namespace grainlab::report {
 namespace {
@@ -46,6 +48,27 @@ TEST_F(ParallelRuns, ResultsDoNotDependOnHowManyRunAtOnce) {
   EXPECT_EQ(slurp(dir / "alone" / "circular-quick" / "series.csv"),
             slurp(dir / "together" / "circular-quick" / "series.csv"));
   EXPECT_TRUE(fs::exists(dir / "together" / "demo-pile" / "summary.json"));
+
+  // Read back from its directory, the run gives the report the same series (to the 17 digits
+  // series.csv keeps) and the same rose snapshots.
+  const AssemblyResult back = loadAssemblyResult((dir / "alone" / "circular-quick").string(), "circular-quick");
+  EXPECT_EQ(back.summary.status, "completed");
+  EXPECT_DOUBLE_EQ(back.summary.voidRatioAfterConsolidation, alone[0].summary.voidRatioAfterConsolidation);
+  ASSERT_EQ(back.shearing.size(), alone[0].shearing.size());
+  for (const std::string& name : seriesColumns()) {
+    const auto a = alone[0].shearing.column(name), b = back.shearing.column(name);
+    for (size_t r = 0; r < a.size(); ++r) {
+      if (std::isnan(a[r])) EXPECT_TRUE(std::isnan(b[r])) << name << " row " << r;
+      else EXPECT_DOUBLE_EQ(a[r], b[r]) << name << " row " << r;
+    }
+  }
+  ASSERT_EQ(back.roses.size(), alone[0].roses.size());
+  for (size_t k = 0; k < back.roses.size(); ++k) {
+    ASSERT_TRUE(back.roses[k].histograms.has_value());
+    EXPECT_DOUBLE_EQ(back.roses[k].axialStrain, alone[0].roses[k].axialStrain);
+    EXPECT_EQ(back.roses[k].histograms->count, alone[0].roses[k].histograms->count);
+    EXPECT_EQ(back.roses[k].histograms->fn, alone[0].roses[k].histograms->fn);
+  }
 }
 
 TEST(ConcurrentRuns, NeverMoreThanTheHardwareNorTheRuns) {

@@ -84,8 +84,13 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
          "hundred particles, sampled coarsely. They test the pipeline; their fabric is noisy and the verdicts "
          "below say little about the paper's claims.</p>\n";
   }
-  o += "<p>Command: <code>" + escapeMarkup(context.command) + "</code>; " + std::to_string(context.concurrentRuns) +
-       " run(s) at once; wall time " + fixed(context.wallSeconds, 1) + " s.</p>\n";
+  o += "<p>Command: <code>" + escapeMarkup(context.command) + "</code>; ";
+  if (context.concurrentRuns == 0) {
+    o += "the report was rebuilt from runs already on disk (each run's wall time is in the table).</p>\n";
+  } else {
+    o += std::to_string(context.concurrentRuns) + " run(s) at once; wall time " + fixed(context.wallSeconds, 1) +
+         " s.</p>\n";
+  }
 
   o += "<h2 id=\"runs\">Runs</h2>\n<table>\n<tr><th>assembly</th><th>status</th><th>particles</th><th>wall time (s)</th>"
        "<th>void ratio after consolidation</th><th>paper</th><th>peak φ_mob in shearing (°)</th><th>contacts at ε22 = 0</th>"

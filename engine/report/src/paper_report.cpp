@@ -6,6 +6,7 @@
 
 #include "grainlab/report/figures.hpp"
 #include "grainlab/report/parallel_runs.hpp"
+#include "grainlab/report/run_loader.hpp"
 
 namespace grainlab::report {
 namespace {
@@ -53,14 +54,29 @@ std::vector<Finding> writePaperReport(const std::string& outDir, std::span<const
 PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<std::string> presets = paperPresets(options.quick);
-  fs::create_directories(fs::path(options.outDir) / "runs");
-  const unsigned concurrent = concurrentRuns(options.jobs, presets.size());
+  const fs::path runsDir = fs::path(options.outDir) / "runs";
+  fs::create_directories(runsDir);
+  const unsigned concurrent = options.reportOnly ? 0 : concurrentRuns(options.jobs, presets.size());
   if (progress) {
-    *progress << "[paper] " << presets.size() << " assemblies, " << concurrent << " at a time, into " << options.outDir
-              << "\n";
+    if (options.reportOnly) *progress << "[paper] rebuilding the report from " << runsDir.string() << "\n";
+    else *progress << "[paper] " << presets.size() << " assemblies, " << concurrent << " at a time, into " << options.outDir << "\n";
   }
   PaperOutcome outcome;
-  outcome.runs = runAssemblies(presets, (fs::path(options.outDir) / "runs").string(), options.jobs, progress);
+  if (options.reportOnly) {
+    for (const std::string& preset : presets) {
+      try {
+        outcome.runs.push_back(loadAssemblyResult((runsDir / preset).string(), preset));
+      } catch (const std::exception& e) {
+        AssemblyResult failed;
+        failed.preset = preset;
+        failed.summary.status = "failed";
+        failed.summary.error = e.what();
+        outcome.runs.push_back(std::move(failed));
+      }
+    }
+  } else {
+    outcome.runs = runAssemblies(presets, runsDir.string(), options.jobs, progress);
+  }
   outcome.allCompleted = true;
   for (const AssemblyResult& a : outcome.runs) outcome.allCompleted = outcome.allCompleted && a.summary.status == "completed";
 

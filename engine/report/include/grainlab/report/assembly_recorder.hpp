@@ -1,16 +1,13 @@
 #pragma once
-// The observer of one assembly's run: writes the run's own output directory (OutputWriter)
-// and keeps, for the report, the shearing stage's series and the histograms nearest to the
-// rose diagrams' strains.
-#include <cstdint>
-#include <optional>
+// The observer of one assembly's run: writes the run's own output directory (OutputWriter,
+// plus roses.json with the histograms the rose diagrams use) and keeps, for the report, the
+// shearing stage's series and those histograms.
 #include <string>
-#include <vector>
 
-#include "grainlab/analysis/histogram.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/report/assembly_result.hpp"
 #include "grainlab/report/progress_board.hpp"
+#include "grainlab/report/shearing_collector.hpp"
 
 namespace grainlab::report {
 
@@ -25,18 +22,15 @@ class AssemblyRecorder : public RunObserver {
   void onFinish(const RunSummary&, const World&) override;
 
  private:
-  void appendShearingRow(std::vector<double> values, const analysis::PolarHistograms* histograms);
-
   AssemblyResult& result_;
+  std::string runDir_;
   OutputWriter writer_;
   ProgressBoard* board_;
   size_t index_;
-  int shearingStage_ = -1;  // index of the biaxial stage; -1 if the scene has none
-  bool shearingStarted_ = false;
-  // The latest sample before the shearing stage: the state it starts from.
-  std::optional<std::vector<double>> before_;
-  std::int64_t beforeStep_ = -1;
-  std::optional<analysis::PolarHistograms> beforeHistograms_;
+  ShearingCollector collector_;
 };
+
+/// The name of the file in a run's directory that keeps its rose snapshots.
+inline constexpr const char* kRosesFile = "roses.json";
 
 }  // namespace grainlab::report

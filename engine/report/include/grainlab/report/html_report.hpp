@@ -14,7 +14,7 @@ namespace grainlab::report {
 struct ReportContext {
   std::string command;        ///< the command line that made the report
   bool quick = false;         ///< the -quick presets
-  unsigned concurrentRuns = 1;
+  unsigned concurrentRuns = 1;  ///< 0: the report was rebuilt from runs already on disk
   double wallSeconds = 0;     ///< s, all runs and the report
 };
 

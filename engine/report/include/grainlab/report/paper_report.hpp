@@ -21,6 +21,9 @@ struct PaperOptions {
   bool quick = false;
   unsigned jobs = 0;          ///< runs at once; 0 = hardware threads (never more than those)
   std::string command;        ///< shown in the report
+  /// Run nothing: rebuild the report from the runs already in outDir/runs/ (as an earlier
+  /// `grainlab paper` left them), e.g. after the report's code changed.
+  bool reportOnly = false;
 };
 
 struct PaperOutcome {
@@ -35,7 +38,8 @@ struct PaperOutcome {
 std::vector<Finding> writePaperReport(const std::string& outDir, std::span<const AssemblyResult> runs,
                                       const ReportContext& context);
 
-/// Runs the six assemblies (progress lines to `progress`, may be null) and writes the report.
+/// Runs the six assemblies (progress lines to `progress`, may be null), or with reportOnly reads
+/// them back, and writes the report. A run that cannot be read back counts as failed.
 PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress);
 
 }  // namespace grainlab::report
