@@ -52,7 +52,10 @@ BASE() { echo "http://127.0.0.1:$PORT"; }
 HEADERS=$TMP_ROOT/headers
 req() {
   local method=$1 path=$2; shift 2
-  BODY=$(curl -s --max-time 30 --path-as-is -X "$method" -D "$HEADERS" -o - -w '\n%{http_code}' "$@" "$(BASE)$path")
+  # HEAD through -I: with -X HEAD curl would wait for the body Content-Length announces.
+  local how=(-X "$method")
+  [[ $method == HEAD ]] && how=(-I)
+  BODY=$(curl -s --max-time 30 --path-as-is "${how[@]}" -D "$HEADERS" -o /dev/stdout -w '\n%{http_code}' "$@" "$(BASE)$path")
   STATUS=${BODY##*$'\n'}
   BODY=${BODY%$'\n'*}
 }
