@@ -187,13 +187,14 @@ int tradeoffCommand(const std::vector<std::string>& args) {
     if (r == runSetting.size()) runSetting.push_back(k);
     runOf[k] = r;
   }
-  // Most expensive first, so the last to finish is a short one: the references, then by
-  // timestep and shearing rate.
+  // Most expensive first, so the last to finish is a short one: by timestep, shearing rate
+  // and shape (a polygon step costs a few disc steps).
   std::vector<size_t> order(runSetting.size());
   for (size_t r = 0; r < order.size(); ++r) order[r] = r;
   auto cost = [&](size_t r) {
     const Setting& s = settings[runSetting[r]];
-    return (1 + 1e-3 / s.inertialNumber) / s.timestepSafety * (s.vertices > 0 ? s.vertices / 6.0 : 1.0);
+    const int vertices = s.vertices > 0 ? s.vertices : presetVertices(s.preset);
+    return (1 + 1e-3 / s.inertialNumber) / s.timestepSafety * (vertices > 0 ? vertices / 2.0 : 1.0);
   };
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost(a) > cost(b); });
 

@@ -80,15 +80,15 @@ std::vector<Setting> expandPlan(const SweepPlan& plan, const std::optional<std::
     ref.value = "safety " + text(ref.timestepSafety) + ", I " + text(ref.inertialNumber) + ", sample " +
                 text(ref.sampleStrain);
     out.push_back(ref);
-    if (plan.noiseProbe) {
-      Setting noise = ref;
-      noise.axis = "noise";
-      noise.timestepSafety = 1.01 * ref.timestepSafety;
-      noise.value = "safety " + text(noise.timestepSafety);
-      out.push_back(noise);
-    }
     Setting base = plan.baseline;
     base.preset = preset;
+    if (plan.noiseProbe) {
+      Setting noise = base;
+      noise.axis = "noise";
+      noise.timestepSafety = 1.01 * base.timestepSafety;
+      noise.value = "baseline at safety " + text(noise.timestepSafety);
+      out.push_back(noise);
+    }
     auto add = [&](const std::string& axis, const std::string& value, auto&& turn) {
       Setting s = base;
       s.axis = axis;

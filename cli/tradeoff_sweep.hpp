@@ -12,7 +12,7 @@ namespace grainlab::tradeoff {
 /// One point of the sweep.
 struct Setting {
   std::string preset;
-  /// Which knob this point turns: "reference", "noise" (the reference with a 1% longer
+  /// Which knob this point turns: "reference", "noise" (the baseline with a 1% longer
   /// timestep: how far chaos alone moves the measures), "timestep_safety",
   /// "inertial_number", "vertices", "sample_strain" or "engine".
   std::string axis;
