@@ -27,6 +27,7 @@ RunContext::RunContext(const Scene& scene) : scene_(scene) {
   world_->setGravity(scene.gravity);
   world_->setTimestepSafety(scene.solver.timestepSafety);
   if (scene.solver.timestep > 0) world_->setTimestep(scene.solver.timestep);
+  world_->initialize();  // contacts exist before the first sample checks them
   if (scene.boundary.type == BoundarySpec::Type::Membrane) membrane_ = std::make_unique<Membrane>(*world_);
   sampler_ = std::make_unique<Sampler>(scene.output, *world_, membrane_.get());
 }

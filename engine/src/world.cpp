@@ -136,7 +136,7 @@ void World::worldVertices(int i, std::vector<Vec2>& out) const {
   for (int k = 0; k < poly.count; ++k) out[k] = position_[i] + rotate(poly.vertices[k], angle_[i]);
 }
 
-void World::prepare() {
+void World::initialize() {
   // Box2D sees polygons scaled to about one unit (its tuning range).
   double meanPolygonRadius = 0;
   for (const Polygon& p : polygons_) meanPolygonRadius += p.circumradius;
@@ -152,11 +152,18 @@ void World::prepare() {
   if (timestep() <= 0 || !std::isfinite(timestep())) {
     throw SimulationError("no usable timestep: the scene has no particle with mass");
   }
+  if (timestep() > criticalTimestep()) {
+    std::ostringstream os;
+    os << "the timestep " << timestep() << " s exceeds the critical timestep " << criticalTimestep()
+       << " s of the stiffest, lightest contact: explicit integration would be unstable (lower"
+          " solver.timestep or solver.timestep_safety below 1)";
+    throw SimulationError(os.str());
+  }
   computeForces();
 }
 
 void World::step() {
-  if (!prepared_) prepare();
+  if (!prepared_) initialize();
   const double dt = timestep();
   auto t0 = Clock::now();
   kick(dt);
@@ -452,13 +459,16 @@ void World::checkHealth() const {
     const double size = p.j >= 0 ? std::min(boundingRadius_[p.i], boundingRadius_[p.j]) : boundingRadius_[p.i];
     if (p.overlap > 0.5 * size) {
       std::ostringstream os;
-      os << "runaway overlap at step " << steps_ << ": ";
+      os << "runaway overlap " << (steps_ == 0 ? std::string("at the start") : "at step " + std::to_string(steps_)) << ": ";
       if (p.j >= 0) os << "particles " << p.i << " and " << p.j;
       else os << "particle " << p.i << " and wall " << (-1 - p.j);
-      os << " overlap by " << 100 * p.overlap / size
-         << "% of the smaller particle's radius; the contacts are too soft for the load or the"
-            " timestep ("
-         << timestep() << " s, critical " << criticalTimestep() << " s) is too large";
+      os << " overlap by " << 100 * p.overlap / size << "% of the smaller particle's radius";
+      if (steps_ == 0) {
+        os << " at the start (more than 50% is refused: separate the particles in the scene)";
+      } else {
+        os << "; the contacts are too soft for the load or the timestep (" << timestep() << " s, critical "
+           << criticalTimestep() << " s) is too large";
+      }
       throw SimulationError(os.str());
     }
   }

@@ -61,7 +61,11 @@ class World {
   /// Prescribed motion of a kinematic particle (ignored for others).
   void setKinematicVelocity(int i, const Vec2& v, double spin = 0);
 
-  /// Advances one timestep: drift, neighbour update, forces, kick.
+  /// Builds the collision geometry, the neighbour list and the first forces once every
+  /// particle and wall is in (step() calls it if needed). Throws SimulationError if the
+  /// timestep exceeds the critical one: explicit integration would be unstable.
+  void initialize();
+  /// Advances one timestep: kick, drift, neighbour update, forces.
   void step();
   /// Throws SimulationError if any state is non-finite or an overlap has run away (beyond
   /// half of the smaller particle's size), naming the particle and the likely cause.
@@ -104,7 +108,6 @@ class World {
   const Profile& profile() const { return profile_; }
 
  private:
-  void prepare();
   void drift(double dt);
   void computeForces();
   void kick(double dt);
@@ -125,7 +128,7 @@ class World {
   double time_ = 0;
   bool prepared_ = false;
   double skin_ = 0;  // m
-  double criticalTimestep_ = 0;  // s, cached by prepare()
+  double criticalTimestep_ = 0;  // s, cached by initialize()
 
   // Hot state, one entry per particle.
   std::vector<Vec2> position_, velocity_, force_;
