@@ -31,6 +31,7 @@ int usage(std::ostream& out, int code) {
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
+         "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
          "                               the HTTP/WebSocket server and dashboard\n"
 #endif
          "  help                         this text\n";
@@ -76,6 +77,10 @@ int serveCommand(const std::vector<std::string>& args) {
     else if (args[k] == "--port" && hasValue) options.port = static_cast<unsigned short>(std::stoi(args[++k]));
     else if (args[k] == "--db" && hasValue) options.db = args[++k];
     else if (args[k] == "--web" && hasValue) options.webRoot = args[++k];
+    else if (args[k] == "--max-concurrent" && hasValue) options.maxConcurrentRuns = std::stoi(args[++k]);
+    else if (args[k] == "--max-queued" && hasValue) options.maxQueuedRuns = std::stoi(args[++k]);
+    else if (args[k] == "--max-particles" && hasValue) options.maxParticles = std::stoi(args[++k]);
+    else if (args[k] == "--max-body" && hasValue) options.maxBodyBytes = std::stoul(args[++k]);
     else {
       std::cerr << "grainlab serve: unexpected argument " << args[k] << "\n";
       return usage(std::cerr, 2);

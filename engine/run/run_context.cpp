@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "grainlab/membrane.hpp"
 #include "grainlab/specimen.hpp"
@@ -70,8 +71,11 @@ void RunContext::sample(RunObserver& observer) {
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
   sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   observer.onSample(s, *world_);
-  const double spacing = stage_->sampleSpacing();
-  while (nextSample_ <= stage_->sampleCoordinate()) nextSample_ += spacing;
+  // The next multiple of the spacing past where the stage is: computed, not stepped to, so
+  // a spacing too small to change a large coordinate cannot loop forever.
+  const double spacing = stage_->sampleSpacing(), at = stage_->sampleCoordinate();
+  nextSample_ = std::max(nextSample_, (std::floor(at / spacing) + 1) * spacing);
+  if (!(nextSample_ > at)) nextSample_ = std::nextafter(at, std::numeric_limits<double>::infinity());
 }
 
 }  // namespace grainlab
