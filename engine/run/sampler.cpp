@@ -13,13 +13,7 @@ namespace {
 
 const double kMissing = std::nan("");
 
-size_t column(const char* name) {
-  const auto& columns = seriesColumns();
-  for (size_t k = 0; k < columns.size(); ++k) {
-    if (columns[k] == name) return k;
-  }
-  throw std::logic_error(std::string("no series column ") + name);
-}
+size_t column(const char* name) { return seriesColumnIndex(name); }
 
 }  // namespace
 

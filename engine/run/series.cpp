@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
@@ -19,6 +20,14 @@ const std::vector<std::string>& seriesColumns() {
       "omega_eq10_deg", "omega_eq11_deg", "f0", "l0",
       "inertial_number", "elastic_energy", "area"};
   return columns;
+}
+
+std::size_t seriesColumnIndex(std::string_view name) {
+  const auto& columns = seriesColumns();
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    if (columns[k] == name) return k;
+  }
+  throw std::logic_error("series has no column " + std::string(name));
 }
 
 std::string seriesHeader() {

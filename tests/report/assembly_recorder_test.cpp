@@ -12,10 +12,7 @@
 namespace grainlab::report {
 namespace {
 
-size_t col(const char* name) {
-  const auto& c = seriesColumns();
-  return static_cast<size_t>(std::find(c.begin(), c.end(), name) - c.begin());
-}
+size_t col(const char* name) { return seriesColumnIndex(name); }
 
 Sample sample(std::int64_t step, int stage, double strain) {
   Sample s;

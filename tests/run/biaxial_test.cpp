@@ -12,10 +12,7 @@
 namespace grainlab {
 namespace {
 
-size_t column(const std::string& name) {
-  const auto& c = seriesColumns();
-  return static_cast<size_t>(std::find(c.begin(), c.end(), name) - c.begin());
-}
+size_t column(const std::string& name) { return seriesColumnIndex(name); }
 
 class BiaxialProbe : public RunObserver {
  public:

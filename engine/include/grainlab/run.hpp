@@ -15,6 +15,8 @@ namespace analysis { struct PolarHistograms; }
 
 /// The columns of series.csv, in order (contracts.md plus extensions).
 const std::vector<std::string>& seriesColumns();
+/// The position of a column in seriesColumns(); throws std::logic_error for an unknown name.
+std::size_t seriesColumnIndex(std::string_view name);
 
 struct Sample {
   std::int64_t step = 0;

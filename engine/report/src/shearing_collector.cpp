@@ -8,14 +8,6 @@
 
 namespace grainlab::report {
 
-size_t seriesColumnIndex(const char* name) {
-  const auto& columns = seriesColumns();
-  for (size_t k = 0; k < columns.size(); ++k) {
-    if (columns[k] == name) return k;
-  }
-  throw std::logic_error(std::string("series has no column ") + name);
-}
-
 ShearingCollector::ShearingCollector(AssemblyResult& result, int shearingStage)
     : result_(&result), shearingStage_(shearingStage) {}
 

@@ -32,7 +32,4 @@ class ShearingCollector {
   std::optional<analysis::PolarHistograms> beforeHistograms_;
 };
 
-/// The index of `name` among seriesColumns(); throws std::logic_error if there is none.
-size_t seriesColumnIndex(const char* name);
-
 }  // namespace grainlab::report
