@@ -58,6 +58,7 @@ class ShearingRecorder : public RunObserver {
     macro_ = index("theta_sigma_macro_deg");
     micro_ = index("theta_sigma_micro_deg");
     inertial_ = index("inertial_number");
+    kinetic_ = index("kinetic_energy");
   }
   void onSample(const Sample& s, const World&) override {
     if (s.stage != stage_) return;
@@ -68,12 +69,13 @@ class ShearingRecorder : public RunObserver {
     samples.thetaSigmaMacroDeg.push_back(at(macro_));
     samples.thetaSigmaMicroDeg.push_back(at(micro_));
     samples.inertialNumber.push_back(at(inertial_));
+    samples.kineticEnergy.push_back(at(kinetic_));
   }
   tradeoff::ShearingSamples samples;
 
  private:
   std::string stage_;
-  size_t strain_ = 0, phi_ = 0, omega_ = 0, macro_ = 0, micro_ = 0, inertial_ = 0;
+  size_t strain_ = 0, phi_ = 0, omega_ = 0, macro_ = 0, micro_ = 0, inertial_ = 0, kinetic_ = 0;
 };
 
 struct Outcome {
@@ -219,7 +221,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
 
   // Errors against each preset's reference run.
   std::vector<std::vector<double>> errors(runSetting.size());
-  std::vector<double> maxAngle(runSetting.size(), kNaN);
+  std::vector<double> maxAngle(runSetting.size(), kNaN), meanAngle(runSetting.size(), kNaN);
   for (size_t r = 0; r < runSetting.size(); ++r) {
     const Setting& s = settings[runSetting[r]];
     size_t ref = 0;
@@ -228,8 +230,9 @@ int tradeoffCommand(const std::vector<std::string>& args) {
     errors[r] = usable ? tradeoff::metricErrors(outcome[r].metrics, outcome[ref].metrics)
                        : std::vector<double>(tradeoff::errorNames().size(), kNaN);
     maxAngle[r] = tradeoff::maxAngleErrorDeg(errors[r]);
+    meanAngle[r] = tradeoff::meanAngleErrorDeg(errors[r]);
   }
-  // The Pareto front of cost against the largest angle error, per preset.
+  // The Pareto front of cost against the mean angle error, per preset.
   auto costOf = [&](size_t r) { return opt.cost == "cpu" ? outcome[r].cpuSeconds : outcome[r].summary.wallSeconds; };
   std::vector<bool> onFront(runSetting.size(), false);
   std::vector<tradeoff::ParetoPanel> panels;
@@ -240,7 +243,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
       if (settings[runSetting[r]].preset != preset) continue;
       runs.push_back(r);
       seconds.push_back(costOf(r));
-      error.push_back(maxAngle[r]);
+      error.push_back(meanAngle[r]);
     }
     for (size_t i : tradeoff::paretoFront(seconds, error)) onFront[runs[i]] = true;
     tradeoff::ParetoPanel panel{preset, {}};
@@ -250,18 +253,19 @@ int tradeoffCommand(const std::vector<std::string>& args) {
       const bool baseline = std::count(runOf.begin(), runOf.end(), r) > 1;
       const std::string axis = baseline ? "baseline" : s.axis;
       const std::string label = baseline || s.axis == "reference" || s.axis == "noise" ? axis : s.value;
-      panel.points.push_back({costOf(r), maxAngle[r], label, axis, onFront[r]});
+      panel.points.push_back({costOf(r), meanAngle[r], label, axis, onFront[r]});
     }
     panels.push_back(panel);
   }
 
   std::vector<std::string> header{"preset", "axis", "value", "timestep_safety", "inertial_number", "strain_rate_per_s",
                                   "vertices", "sample_strain", "engine", "status", "wall_s", "cpu_s", "steps",
-                                  "particles", "measured_inertial_number", "peak_phi_mob_deg", "phi_mob_20_deg"};
+                                  "particles", "measured_inertial_number", "shearing_kinetic_energy",
+                                  "peak_phi_mob_deg", "phi_mob_20_deg"};
   for (double e : tradeoff::kOmegaStrains) header.push_back("omega_" + std::to_string(std::lround(100 * e)) + "_deg");
   header.insert(header.end(), {"theta_sigma_gap_deg", "void_ratio"});
   for (const std::string& n : tradeoff::errorNames()) header.push_back("err_" + n);
-  header.insert(header.end(), {"max_angle_error_deg", "pareto", "scene", "note"});
+  header.insert(header.end(), {"mean_angle_error_deg", "max_angle_error_deg", "pareto", "scene", "note"});
   report::CsvTable table(header);
   for (size_t k = 0; k < settings.size(); ++k) {
     const Setting& s = settings[k];
@@ -273,13 +277,13 @@ int tradeoffCommand(const std::vector<std::string>& args) {
                                      vertices > 0 ? report::CsvCell(vertices) : report::CsvCell(""),
                                      s.sampleStrain, s.engine, o.summary.status, o.summary.wallSeconds,
                                      o.cpuSeconds, static_cast<double>(o.summary.steps), o.summary.particles,
-                                     m.inertialNumber, m.peakPhiMobDeg, m.phiMobAtEndDeg};
+                                     m.inertialNumber, m.kineticEnergy, m.peakPhiMobDeg, m.phiMobAtEndDeg};
     for (double w : m.omegaDeg) row.emplace_back(w);
     row.insert(row.end(), {m.thetaSigmaGapDeg, m.voidRatio >= 0 ? m.voidRatio : kNaN});
     for (double e : errors[r]) row.emplace_back(e);
     std::vector<std::string> notes = o.summary.notes;
     if (!o.summary.error.empty()) notes.insert(notes.begin(), o.summary.error);
-    row.insert(row.end(), {maxAngle[r], onFront[r] ? 1 : 0, sceneFiles[r], joined(notes)});
+    row.insert(row.end(), {meanAngle[r], maxAngle[r], onFront[r] ? 1 : 0, sceneFiles[r], joined(notes)});
     table.addRow(row);
   }
   if (refusal) {
@@ -297,18 +301,20 @@ int tradeoffCommand(const std::vector<std::string>& args) {
   table.write((dir / "tradeoff.csv").string());
   const std::string xLabel = opt.cost == "cpu" ? "CPU time per run (s, log scale): its wall time on an idle core"
                                                : "wall time per run (s, log scale)";
-  std::ofstream(dir / "pareto.svg") << tradeoff::renderParetoSvg(panels, xLabel, "largest angle error vs reference (°)");
+  std::ofstream(dir / "pareto.svg") << tradeoff::renderParetoSvg(panels, xLabel, "mean angle error vs reference (°)");
 
   // A short table on stdout: cost and error of every setting.
   std::cout << std::left << std::setw(28) << "preset" << std::setw(17) << "axis" << std::setw(36) << "value"
-            << std::setw(10) << "wall s" << std::setw(10) << "cpu s" << std::setw(12) << "max err °" << std::setw(11) << "Δ void" << "front\n";
+            << std::setw(10) << "wall s" << std::setw(10) << "cpu s" << std::setw(12) << "mean err °" << std::setw(11)
+            << "max err °" << std::setw(11) << "Δ void" << "front\n";
   for (size_t k = 0; k < settings.size(); ++k) {
     const size_t r = runOf[k];
     const double voidError = errors[r].back();
     std::cout << std::setw(28) << settings[k].preset << std::setw(17) << settings[k].axis << std::setw(36)
               << settings[k].value << std::setw(10) << std::setprecision(3) << outcome[r].summary.wallSeconds
               << std::setw(10) << std::setprecision(3) << outcome[r].cpuSeconds
-              << std::setw(12) << std::setprecision(3) << maxAngle[r] << std::setw(11) << std::setprecision(2)
+              << std::setw(12) << std::setprecision(3) << meanAngle[r] << std::setw(11) << maxAngle[r]
+              << std::setw(11) << std::setprecision(2)
               << voidError << (onFront[r] ? "*" : "") << "\n";
   }
   std::cerr << "tradeoff: wrote " << (dir / "tradeoff.csv").string() << " and " << (dir / "pareto.svg").string() << "\n";

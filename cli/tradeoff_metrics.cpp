@@ -48,16 +48,18 @@ RunMetrics measureRun(const ShearingSamples& s, double peakPhiMobDeg, double voi
   }
   // The gap once shearing has begun: at zero strain the stress is isotropic and θσ has no
   // meaning.
-  std::vector<double> gaps, inertial;
+  std::vector<double> gaps, inertial, kinetic;
   for (size_t k = 0; k < s.axialStrain.size(); ++k) {
     if (!(s.axialStrain[k] > 0)) continue;
     const double a = k < s.thetaSigmaMicroDeg.size() ? s.thetaSigmaMicroDeg[k] : kNaN;
     const double b = k < s.thetaSigmaMacroDeg.size() ? s.thetaSigmaMacroDeg[k] : kNaN;
     if (std::isfinite(a) && std::isfinite(b)) gaps.push_back(report::axialDistanceDeg(a, b));
     if (k < s.inertialNumber.size()) inertial.push_back(s.inertialNumber[k]);
+    if (k < s.kineticEnergy.size()) kinetic.push_back(s.kineticEnergy[k]);
   }
   m.thetaSigmaGapDeg = report::finiteMedian(gaps);
   m.inertialNumber = report::finiteMedian(inertial);
+  m.kineticEnergy = report::finiteMedian(kinetic);
   return m;
 }
 
@@ -87,6 +89,16 @@ double maxAngleErrorDeg(const std::vector<double>& errors) {
     worst = std::max(worst, errors[k]);
   }
   return worst;
+}
+
+double meanAngleErrorDeg(const std::vector<double>& errors) {
+  if (errors.size() < 2) return kNaN;
+  double sum = 0;
+  for (size_t k = 0; k + 1 < errors.size(); ++k) {  // the last is the void ratio
+    if (!std::isfinite(errors[k])) return kNaN;
+    sum += errors[k];
+  }
+  return sum / static_cast<double>(errors.size() - 1);
 }
 
 std::vector<size_t> paretoFront(const std::vector<double>& cost, const std::vector<double>& error) {

@@ -20,6 +20,7 @@ struct ShearingSamples {
   std::vector<double> thetaSigmaMacroDeg;   ///< θσ from the stress tensor, [0°, 180°)
   std::vector<double> thetaSigmaMicroDeg;   ///< θσ from Eq. 7, [0°, 180°)
   std::vector<double> inertialNumber;
+  std::vector<double> kineticEnergy;        ///< J/m
 };
 
 /// What a run is judged on; NaN where it could not be measured.
@@ -30,6 +31,7 @@ struct RunMetrics {
   double thetaSigmaGapDeg = 0;              ///< median |θσ(Eq. 7) − θσ(stress)| over shearing
   double voidRatio = 0;                     ///< after consolidation
   double inertialNumber = 0;                ///< median measured I over shearing
+  double kineticEnergy = 0;                 ///< median over shearing, J/m: numerical heating shows here
 };
 
 /// y at x = `at` by linear interpolation between the first pair of neighbouring samples
@@ -52,6 +54,9 @@ const std::vector<std::string>& errorNames();
 /// Of metricErrors(): the largest of the angle errors (all but the void ratio), degrees;
 /// NaN if any is NaN.
 double maxAngleErrorDeg(const std::vector<double>& errors);
+/// Of metricErrors(): the mean of the angle errors, degrees (less at the mercy of the one
+/// noisiest measure than the largest); NaN if any is NaN.
+double meanAngleErrorDeg(const std::vector<double>& errors);
 
 /// Indices of the points not dominated by another (one with cost ≤ and error ≤ and one of
 /// them <), in increasing cost. Points with a non-finite coordinate are left out.
