@@ -254,6 +254,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
       const std::string axis = baseline ? "baseline" : s.axis;
       const std::string label = baseline || s.axis == "reference" || s.axis == "noise" ? axis : s.value;
       panel.points.push_back({costOf(r), meanAngle[r], label, axis, onFront[r]});
+      if (s.axis == "noise") panel.noiseFloor = meanAngle[r];
     }
     panels.push_back(panel);
   }

@@ -57,6 +57,7 @@ void renderPanel(std::ostringstream& svg, const ParetoPanel& panel, int x0, cons
   // Half a decade of room at either end keeps markers and labels off the frame.
   tLo /= std::sqrt(3.0);
   tHi *= std::sqrt(3.0);
+  if (std::isfinite(panel.noiseFloor)) eHi = std::max(eHi, panel.noiseFloor);
   const report::AxisTicks yAxis = report::niceAxis(0, eHi > 0 ? eHi : 1);
   const double left = x0 + kLeft, right = x0 + kWidth - kRight, top = kTop, bottom = kHeight - kBottom;
   const report::LinearScale sx{std::log10(tLo), std::log10(tHi), left, right};
@@ -84,6 +85,12 @@ void renderPanel(std::ostringstream& svg, const ParetoPanel& panel, int x0, cons
   svg << "<text transform=\"translate(" << x0 + 16 << "," << (top + bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(yLabel) << "</text>\n";
 
+  if (std::isfinite(panel.noiseFloor)) {
+    const double y = sy(panel.noiseFloor);
+    svg << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << right << "\" y2=\"" << y
+        << "\" stroke=\"#999\" stroke-dasharray=\"2 4\"/><text x=\"" << right - 4 << "\" y=\"" << y - 4
+        << "\" text-anchor=\"end\" font-size=\"9\" fill=\"#777\">noise floor</text>\n";
+  }
   // The front as a staircase: from each front point, right at its error to the next one's cost.
   std::vector<const ParetoPoint*> front;
   for (const ParetoPoint* p : drawn) {

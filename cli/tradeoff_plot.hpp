@@ -1,6 +1,7 @@
 #pragma once
 // The Pareto plot of `grainlab tradeoff`: error against cost, one panel per preset, as a
 // standalone SVG written by hand (log-scaled time, linear error, the front as a staircase).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct ParetoPoint {
 struct ParetoPanel {
   std::string title;
   std::vector<ParetoPoint> points;
+  /// The error a trivial perturbation alone produces (drawn as a dashed line); NaN for none.
+  double noiseFloor = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The panels side by side in one <svg> document.
