@@ -20,9 +20,11 @@ std::string text(double v) {
   return buffer;
 }
 
-bool hasPolygons(const std::string& preset) {
+// The preset's polygon vertex count; 0 for discs.
+int presetVertices(const std::string& preset) {
   const json scene = presetScene(preset);
-  return scene.contains("assembly") && scene["assembly"].value("shape", "disc") != "disc";
+  if (!scene.contains("assembly") || scene["assembly"].value("shape", "disc") == "disc") return 0;
+  return scene["assembly"].value("vertices", 6);
 }
 
 json& biaxialStage(json& scene) {
@@ -98,8 +100,11 @@ std::vector<Setting> expandPlan(const SweepPlan& plan, const std::optional<std::
     };
     for (double v : plan.timestepSafeties) add("timestep_safety", text(v), [&](Setting& s) { s.timestepSafety = v; });
     for (double v : plan.inertialNumbers) add("inertial_number", text(v), [&](Setting& s) { s.inertialNumber = v; });
-    if (hasPolygons(preset)) {
-      for (int v : plan.vertexCounts) add("vertices", std::to_string(v), [&](Setting& s) { s.vertices = v; });
+    if (const int own = presetVertices(preset); own > 0) {
+      // The preset's own count is the baseline's run, not another one.
+      for (int v : plan.vertexCounts) {
+        add("vertices", std::to_string(v), [&](Setting& s) { s.vertices = v == own ? 0 : v; });
+      }
     }
     for (double v : plan.sampleStrains) add("sample_strain", text(v), [&](Setting& s) { s.sampleStrain = v; });
     if (plan.engineAxis && !box2dRefusal) {
