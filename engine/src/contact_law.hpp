@@ -52,7 +52,6 @@ struct CundallStrack {
 struct Frictionless {
   static constexpr bool kKeepsHistory = false;
   double force(double, const ContactMotion&, double, double, double&) const { return 0; }
-  double energy(double) const { return 0; }
 };
 
 template <class Normal, class Tangential>

@@ -433,14 +433,6 @@ double World::elasticEnergy() const {
   return e;
 }
 
-double World::potentialEnergy() const {
-  double e = 0;
-  for (int k = 0; k < size(); ++k) {
-    if (motion_[k] == Motion::Dynamic) e -= mass_[k] * gravity_.dot(position_[k]);
-  }
-  return e;
-}
-
 void World::checkHealth() const {
   for (int k = 0; k < size(); ++k) {
     const bool finite = std::isfinite(position_[k].x()) && std::isfinite(position_[k].y()) &&

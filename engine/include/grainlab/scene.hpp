@@ -36,14 +36,11 @@ struct BoundarySpec {
   Type type = Type::None;
 };
 
+/// The solver: grainlab's DEM ("solver.engine": "dem", the only engine built so far).
 struct SolverSpec {
-  enum class Engine { Dem, Box2d };
-  Engine engine = Engine::Dem;
   double timestep = 0;            ///< s; 0 = timestepSafety × critical timestep
   double timestepSafety = 0.2;
   int threads = 1;                ///< force computation threads; results do not depend on it
-  int box2dVelocityIterations = 8;
-  int box2dPositionIterations = 3;
 };
 
 struct OutputSpec {

@@ -102,8 +102,6 @@ class World {
   double kineticEnergy() const;
   /// Energy stored in the contact springs, J per metre.
   double elasticEnergy() const;
-  /// Σ m g·x: the gravitational potential energy relative to the origin, J per metre.
-  double potentialEnergy() const;
 
   const Profile& profile() const { return profile_; }
 
