@@ -33,6 +33,7 @@ Result measure(const Scene& scene, int steps, int repeats, int threads) {
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
   Result r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}};
+  std::cerr << "bench: " << scene.name << " settled, timing\n";
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < steps; ++k) world.step();
@@ -53,8 +54,10 @@ double median(std::vector<double> v) {
 
 int benchCommand(const std::vector<std::string>& args) {
   int steps = 2000, repeats = 5, threads = 1;
+  std::string only;  // one scene by name, for profiling
   for (size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--steps" && k + 1 < args.size()) steps = std::stoi(args[++k]);
+    else if (args[k] == "--scene" && k + 1 < args.size()) only = args[++k];
     else if (args[k] == "--repeats" && k + 1 < args.size()) repeats = std::stoi(args[++k]);
     else if (args[k] == "--threads" && k + 1 < args.size()) threads = std::stoi(args[++k]);
     else {
@@ -76,6 +79,7 @@ int benchCommand(const std::vector<std::string>& args) {
   const std::vector<Scene> scenes{pileScene(50, 50, false), general, pileScene(50, 50, true)};
   std::vector<Result> results;
   for (const Scene& scene : scenes) {
+    if (!only.empty() && scene.name != only) continue;
     std::cerr << "bench: " << scene.name << " settling, then " << repeats << " x " << steps << " steps\n";
     results.push_back(measure(scene, steps, repeats, threads));
   }
@@ -88,8 +92,13 @@ int benchCommand(const std::vector<std::string>& args) {
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }
-  std::cout << "discs-only path / general path: " << median(results[0].rates) / median(results[1].rates) << "\n";
-  std::cout << "polygons / discs: " << median(results[2].rates) / median(results[0].rates) << "\n";
+  if (results.size() == scenes.size()) {
+    std::cout << "discs-only path / general path: " << median(results[0].rates) / median(results[1].rates) << "\n";
+    std::cout << "polygons / discs: " << median(results[2].rates) / median(results[0].rates) << "\n";
+  } else if (results.empty()) {
+    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile)\n";
+    return 2;
+  }
   return 0;
 }
 

@@ -106,7 +106,8 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
       summary.wallSeconds > 0 ? summary.particles * static_cast<double>(summary.steps) / summary.wallSeconds : 0.0;
   const Profile& p = world.profile();
   s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
-                          {"neighbor_rebuilds", p.rebuilds}};
+                          {"neighbor_rebuilds", p.rebuilds},
+                          {"box2d_manifolds", p.box2dCalls}};
   writeAtomically(dir / "summary.json", s.dump(2) + "\n");
   if (progress_) {
     *progress_ << summary.status << " in " << summary.wallSeconds << " s, " << summary.steps << " steps"

@@ -2,23 +2,6 @@
 
 namespace grainlab {
 
-ContactGeometry reduceManifold(const Vec2& normal, const ManifoldPoints& m) {
-  ContactGeometry g;
-  double deepest = 0, weight = 0;
-  Vec2 point = Vec2::Zero();
-  for (int k = 0; k < m.count; ++k) {
-    if (m.depths[k] <= 0) continue;
-    deepest = std::max(deepest, m.depths[k]);
-    weight += m.depths[k];
-    point += m.depths[k] * m.points[k];
-  }
-  if (weight <= 0) return g;
-  g.normal = normal;
-  g.overlap = deepest;
-  g.point = point / weight;
-  return g;
-}
-
 ContactGeometry collidePolygonWall(const Polygon& poly, const Vec2& x, double c, double s, const Wall& wall) {
   ManifoldPoints m;
   for (int k = 0; k < poly.count; ++k) {

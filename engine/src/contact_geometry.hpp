@@ -1,5 +1,8 @@
 #pragma once
 // Narrow phase: where two shapes touch. Pure functions of the two shapes and their poses.
+#include <algorithm>
+#include <cmath>
+
 #include "grainlab/math.hpp"
 #include "grainlab/shape.hpp"
 #include "grainlab/wall.hpp"
@@ -22,7 +25,22 @@ struct ManifoldPoints {
   Vec2 points[2];
   double depths[2] = {0, 0};
 };
-ContactGeometry reduceManifold(const Vec2& normal, const ManifoldPoints& m);
+inline ContactGeometry reduceManifold(const Vec2& normal, const ManifoldPoints& m) {
+  ContactGeometry g;
+  double deepest = 0, weight = 0;
+  Vec2 point = Vec2::Zero();
+  for (int k = 0; k < m.count; ++k) {
+    if (m.depths[k] <= 0) continue;
+    deepest = std::max(deepest, m.depths[k]);
+    weight += m.depths[k];
+    point += m.depths[k] * m.points[k];
+  }
+  if (weight <= 0) return g;
+  g.normal = normal;
+  g.overlap = deepest;
+  g.point = point / weight;
+  return g;
+}
 
 inline ContactGeometry collideDiscs(const Vec2& xa, double ra, const Vec2& xb, double rb) {
   ContactGeometry g;

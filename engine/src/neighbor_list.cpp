@@ -78,7 +78,7 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     if (iMoves) {
       for (int w = static_cast<int>(walls.size()) - 1; w >= 0; --w) {
         const double s = (positions[i] - walls[w].point).dot(walls[w].normal);
-        if (s < boundingRadii[i] + skin) pairs_.push_back({i, -1 - w, -1});
+        if (s < boundingRadii[i] + skin) pairs_.push_back({i, -1 - w});
       }
     }
     candidates_.clear();
@@ -98,20 +98,22 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
       }
     }
     std::sort(candidates_.begin(), candidates_.end());
-    for (int j : candidates_) pairs_.push_back({i, j, -1});
+    for (int j : candidates_) pairs_.push_back({i, j});
   }
 
   // Carry contact history over: both lists are sorted by (i, j).
   auto less = [](const PairState& a, const PairState& b) { return a.i < b.i || (a.i == b.i && a.j < b.j); };
   size_t o = 0;
-  for (PairState& p : pairs_) {
+  carriedFrom_.assign(pairs_.size(), -1);
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    PairState& p = pairs_[k];
     while (o < previous_.size() && less(previous_[o], p)) ++o;
     if (o < previous_.size() && previous_[o].i == p.i && previous_[o].j == p.j) {
       p.history = previous_[o].history;
       p.fn = previous_[o].fn;
       p.ft = previous_[o].ft;
       p.overlap = previous_[o].overlap;
-      p.axis = previous_[o].axis;
+      carriedFrom_[k] = static_cast<int>(o);
     }
   }
   // Each particle's pairs, in pair order (a counting sort over the sorted pair list).

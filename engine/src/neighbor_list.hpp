@@ -12,11 +12,10 @@
 
 namespace grainlab {
 
-/// One candidate pair and the state its contact keeps (hot data: 64 bytes).
+/// One candidate pair and the state its contact keeps (hot data: 56 bytes).
 struct PairState {
   int i = 0;
   int j = 0;                 ///< particle index, or -1 - wall index
-  int axis = -1;             ///< polygon pairs: a cached separating axis (PolygonCollider)
   double dampN = 0;          ///< normal viscous coefficient, N·s/m
   double dampT = 0;          ///< tangential viscous coefficient, N·s/m
   double history = 0;        ///< tangential spring elongation, m (0 when not touching)
@@ -38,6 +37,9 @@ class NeighborList {
   const std::vector<int>& adjacencyStart() const { return adjacencyStart_; }
   const std::vector<int>& adjacency() const { return adjacency_; }
   const std::vector<PairState>& pairs() const { return pairs_; }
+  /// After a rebuild, each pair's index in the list before it, or -1 for a new pair: lets
+  /// per-pair state kept elsewhere follow its pair.
+  const std::vector<int>& carriedFrom() const { return carriedFrom_; }
 
  private:
   void build(std::span<const Vec2> positions, std::span<const double> boundingRadii,
@@ -50,6 +52,7 @@ class NeighborList {
   std::vector<PairState> previous_;  // scratch for carrying history over
   std::vector<int> cellStart_, cellItems_, candidates_;
   std::vector<int> adjacencyStart_, adjacency_;
+  std::vector<int> carriedFrom_;
 };
 
 }  // namespace grainlab

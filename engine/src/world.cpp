@@ -189,15 +189,14 @@ void World::drift(double dt) {
     position_[k] += velocity_[k] * dt;
     if (spin_[k] != 0) {
       angle_[k] += spin_[k] * dt;
-      cos_[k] = std::cos(angle_[k]);
-      sin_[k] = std::sin(angle_[k]);
+      ::sincos(angle_[k], &sin_[k], &cos_[k]);  // glibc: one range reduction for both
     }
   }
 }
 
-// The contact between the two members of a pair, whatever their shapes. With `axis`, a
-// polygon pair first tries its cached separating axis and keeps it up to date.
-ContactGeometry World::pairGeometry(const PairState& p, int* axis) const {
+// The contact between the two members of a pair, whatever their shapes. A pair involving a
+// polygon goes through its cached Box2D answer (PolygonCollider), which `cache` keeps.
+ContactGeometry World::pairGeometry(const PairState& p, CachedContact* cache) const {
   const int i = p.i, j = p.j;
   const auto& x = position_;
   const auto& radius = boundingRadius_;
@@ -207,20 +206,17 @@ ContactGeometry World::pairGeometry(const PairState& p, int* axis) const {
                ? collideDiscWall(x[i], radius[i], wall)
                : collidePolygonWall(polygons_[static_cast<size_t>(shapeIndex_[i])], x[i], cos_[i], sin_[i], wall);
   }
-  const double reach = radius[i] + radius[j];
-  if ((x[j] - x[i]).squaredNorm() >= reach * reach) return {};  // bounding circles apart
   const bool iDisc = shape_[i] == ShapeKind::Disc, jDisc = shape_[j] == ShapeKind::Disc;
   if (iDisc && jDisc) return collideDiscs(x[i], radius[i], x[j], radius[j]);
-  const Pose pi{x[i], cos_[i], sin_[i]}, pj{x[j], cos_[j], sin_[j]};
-  if (!iDisc && !jDisc) {
-    const int a = shapeIndex_[i], b = shapeIndex_[j];
-    if (axis && *axis >= 0 && polygonCollider_->separatedAlong(*axis, a, pi, b, pj)) return {};
-    ContactGeometry g = polygonCollider_->collidePolygons(a, pi, b, pj);
-    if (axis) *axis = g.overlap > 0 ? -1 : polygonCollider_->separatingAxis(a, pi, b, pj);
-    return g;
+  const double reach = radius[i] + radius[j];
+  if ((x[j] - x[i]).squaredNorm() >= reach * reach) {
+    if (cache) cache->kind = CachedContact::Kind::None;  // bounding circles apart
+    return {};
   }
-  if (!iDisc) return polygonCollider_->collidePolygonDisc(shapeIndex_[i], pi, x[j], radius[j]);
-  ContactGeometry g = polygonCollider_->collidePolygonDisc(shapeIndex_[j], pj, x[i], radius[i]);
+  const Pose pi{x[i], cos_[i], sin_[i]}, pj{x[j], cos_[j], sin_[j]};
+  if (!iDisc && !jDisc) return polygonCollider_->collidePolygons(shapeIndex_[i], pi, shapeIndex_[j], pj, cache);
+  if (!iDisc) return polygonCollider_->collidePolygonDisc(shapeIndex_[i], pi, x[j], radius[j], cache);
+  ContactGeometry g = polygonCollider_->collidePolygonDisc(shapeIndex_[j], pj, x[i], radius[i], cache);
   g.normal = -g.normal;
   return g;
 }
@@ -239,7 +235,7 @@ inline bool World::pairForce(PairState& p, const Law& law, double dt, Vec2& F, d
     g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
                : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
   } else {
-    g = pairGeometry(p, &p.axis);
+    g = pairGeometry(p, &polygonCache_[static_cast<size_t>(&p - neighbors_->pairs().data())]);
   }
   if (g.overlap <= 0) {
     p.history = 0;
@@ -339,6 +335,15 @@ void World::assignDamping() {
   }
 }
 
+void World::carryPolygonCache() {
+  const std::vector<int>& from = neighbors_->carriedFrom();
+  std::vector<CachedContact> carried(from.size());
+  for (size_t k = 0; k < from.size(); ++k) {
+    if (from[k] >= 0 && static_cast<size_t>(from[k]) < polygonCache_.size()) carried[k] = polygonCache_[static_cast<size_t>(from[k])];
+  }
+  polygonCache_.swap(carried);
+}
+
 void World::computeForces() {
   auto t0 = Clock::now();
   bool rebuilt = false;
@@ -350,6 +355,7 @@ void World::computeForces() {
   }
   if (rebuilt) {
     assignDamping();
+    if (!polygons_.empty()) carryPolygonCache();
     ++profile_.rebuilds;
   }
   auto t1 = Clock::now();
@@ -374,6 +380,7 @@ void World::computeForces() {
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
   profile_.forces += seconds(t1, t2);
+  if (polygonCollider_) profile_.box2dCalls = polygonCollider_->box2dCalls();
 }
 
 void World::applyLocalDamping() {
@@ -393,9 +400,13 @@ void World::applyLocalDamping() {
 void World::contacts(std::vector<ContactRecord>& out) const {
   out.clear();
   if (!prepared_) return;
-  for (const PairState& p : neighbors_->pairs()) {
+  const std::vector<PairState>& pairs = neighbors_->pairs();
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
     if (p.overlap <= 0) continue;
-    const ContactGeometry g = pairGeometry(p, nullptr);
+    // The cached answer as the forces saw it (positions have not moved since).
+    CachedContact cache = k < polygonCache_.size() ? polygonCache_[k] : CachedContact{};
+    const ContactGeometry g = pairGeometry(p, &cache);
     ContactRecord c;
     c.i = p.i;
     c.j = p.j;

@@ -78,8 +78,19 @@ void checkBiaxial(const std::string& preset) {
   // The servo holds σ11 at the confining 300 kPa: its median over shearing within 2%.
   std::nth_element(s11.begin(), s11.begin() + s11.size() / 2, s11.end());
   EXPECT_NEAR(s11[s11.size() / 2], 300e3, 0.02 * 300e3);
-  EXPECT_GT(summary.peakPhiMobDeg, 5.0);
-  EXPECT_LT(summary.peakPhiMobDeg, 45.0);
+  // Mobilised friction: an assembly with μ = 0.5 shears at some tens of degrees (freely
+  // rolling discs lowest).
+  // The median over shearing past 2% strain is the robust figure; a few-hundred-particle
+  // specimen's peak can spike well above it when a strong column forms (52° seen at 19%
+  // strain on elongated-bedding-30-quick), so the peak only has to stay below 60°.
+  std::vector<double> phi;
+  for (const auto& row : probe.shearing) {
+    if (row[column("axial_strain")] > 0.02) phi.push_back(row[column("phi_mob_deg")]);
+  }
+  std::nth_element(phi.begin(), phi.begin() + phi.size() / 2, phi.end());
+  EXPECT_GT(phi[phi.size() / 2], 10.0);  // discs without rolling resistance: 14° (circular-quick)
+  EXPECT_LT(phi[phi.size() / 2], 45.0);
+  EXPECT_LT(summary.peakPhiMobDeg, 60.0);
 }
 
 TEST(Biaxial, CircularQuickShearsToTwentyPercent) { checkBiaxial("circular-quick"); }

@@ -21,6 +21,7 @@ class PolygonCollider;
 class WorkerPool;
 struct PairState;
 struct ContactGeometry;
+struct CachedContact;
 
 struct WorldSettings {
   /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
@@ -110,7 +111,8 @@ class World {
   void computeForces();
   void kick(double dt);
   void assignDamping();
-  ContactGeometry pairGeometry(const PairState& pair, int* axis) const;
+  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
+  void carryPolygonCache();
   void applyLocalDamping();
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
@@ -151,6 +153,7 @@ class World {
     bool touching = false;
   };
   std::vector<PairForce> pairForce_;     // per pair, for the parallel gather
+  std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   Profile profile_;
 };
 

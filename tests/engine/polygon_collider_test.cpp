@@ -1,0 +1,138 @@
+// The polygon narrow phase's reuse of Box2D's features (engine/src/polygon_collider.hpp):
+// a kept answer must agree with a fresh one as long as the pair has moved less than the
+// slack the answer carries, and a pair must be asked of Box2D again once it moves more.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "polygon_collider.hpp"
+
+namespace grainlab {
+namespace {
+
+// An elongated hexagon inscribed in an ellipse of aspect ratio 1.5, as in the specimens.
+Polygon hexagon(double longAxis) {
+  std::vector<Vec2> v;
+  const double a = 0.5 * longAxis, b = a / 1.5;
+  for (int k = 0; k < 6; ++k) v.emplace_back(a * std::cos(k * kPi / 3), b * std::sin(k * kPi / 3));
+  return makePolygon(v);
+}
+
+Pose pose(Vec2 x, double angle) { return {x, std::cos(angle), std::sin(angle)}; }
+
+struct Fixture {
+  Polygon A = hexagon(0.005), B = hexagon(0.0045);
+  PolygonCollider collider{1.0 / 0.0025};
+  int a = collider.add(A), b = collider.add(B);
+};
+
+// B placed against A along a random direction, overlapping by `overlap` (or apart by −overlap)
+// to within the bisection's resolution.
+Pose touching(Fixture& f, const Pose& pa, double angleB, double direction, double overlap) {
+  const Vec2 u(std::cos(direction), std::sin(direction));
+  double lo = 0, hi = 0.01;  // centre distance: overlapping at lo, apart at hi
+  for (int it = 0; it < 80; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const bool overlapping = f.collider.collidePolygons(f.a, pa, f.b, pose(pa.x + mid * u, angleB)).overlap > 0;
+    (overlapping ? lo : hi) = mid;
+  }
+  return pose(pa.x + (lo - overlap) * u, angleB);
+}
+
+TEST(PolygonCollider, KeptFeaturesAgreeWithFreshOnesWithinTheSlack) {
+  Fixture f;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0, identical = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Pose pa = pose(Vec2(0.1, -0.05), 2 * kPi * unit(rng));
+    const double overlap = 1e-6 * (0.5 + 9.5 * unit(rng));  // 1e-4 .. 2e-3 of the size
+    const Pose pb = touching(f, pa, 2 * kPi * unit(rng), 2 * kPi * unit(rng), overlap);
+    CachedContact kept;
+    const ContactGeometry first = f.collider.collidePolygons(f.a, pa, f.b, pb, &kept);
+    ASSERT_GT(first.overlap, 0);
+    // Move B relative to A by less than the slack: translation and turn share the budget.
+    const double budget = 0.99 * kept.slack, share = unit(rng);
+    const double turn = budget * share / f.B.circumradius / 2;  // chord ≤ |Δθ| r, L1 ≤ 2× that
+    const double shift = budget * (1 - share) / 2;
+    const double dir = 2 * kPi * unit(rng);
+    double angleB = std::atan2(pb.s, pb.c) + (unit(rng) < 0.5 ? -turn : turn);
+    const Pose moved = pose(pb.x + shift * Vec2(std::cos(dir), std::sin(dir)), angleB);
+    const long long before = f.collider.box2dCalls();
+    const ContactGeometry reused = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
+    EXPECT_EQ(f.collider.box2dCalls(), before) << "within the slack, Box2D must not be asked again";
+    const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
+    ASSERT_GT(fresh.overlap, 0);
+    ASSERT_GT(reused.overlap, 0);
+    ++compared;
+    // The features can differ only where Box2D would now switch faces; the depth can then
+    // differ by at most Box2D's own face tolerance plus twice the motion.
+    const double tolerance = (0.1f * b2_linearSlop) / f.collider.lengthScale() + 2 * budget;
+    EXPECT_LE(std::abs(reused.overlap - fresh.overlap), tolerance);
+    if (reused.overlap == fresh.overlap && reused.point == fresh.point && reused.normal == fresh.normal) ++identical;
+  }
+  // Feature switches are rare events: nearly every reuse is the fresh answer, bit for bit.
+  EXPECT_GT(identical, 0.98 * compared);
+}
+
+TEST(PolygonCollider, PairKeptApartCannotTouchWithinItsGap) {
+  Fixture f;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Pose pa = pose(Vec2(-0.2, 0.3), 2 * kPi * unit(rng));
+    const double gap = 1e-6 * (0.1 + 50 * unit(rng));
+    const Pose pb = touching(f, pa, 2 * kPi * unit(rng), 2 * kPi * unit(rng), -gap);
+    CachedContact kept;
+    ASSERT_LE(f.collider.collidePolygons(f.a, pa, f.b, pb, &kept).overlap, 0);
+    // Within the speculative margin Box2D answers with features; this test is about the rest.
+    if (kept.kind != CachedContact::Kind::Apart) continue;
+    // The slack is the gap along the best separating axis: no larger than the distance.
+    EXPECT_LE(kept.slack, gap * (1 + 1e-6) + 1e-12);
+    // Move B toward A by just under the slack (in the L1 measure the cache uses): still apart,
+    // without asking Box2D.
+    const Vec2 d = pa.x - pb.x;
+    const Vec2 toward = d / (std::abs(d.x()) + std::abs(d.y()));
+    const Pose moved = pose(pb.x + 0.999 * kept.slack * toward, std::atan2(pb.s, pb.c));
+    const long long before = f.collider.box2dCalls();
+    EXPECT_LE(f.collider.collidePolygons(f.a, pa, f.b, moved, &kept).overlap, 0);
+    EXPECT_EQ(f.collider.box2dCalls(), before);
+    EXPECT_LE(f.collider.collidePolygons(f.a, pa, f.b, moved).overlap, 0) << "a fresh answer agrees";
+  }
+}
+
+TEST(PolygonCollider, MovingBeyondTheSlackAsksBox2DAgain) {
+  Fixture f;
+  const Pose pa = pose(Vec2(0, 0), 0.0);
+  const Pose pb = touching(f, pa, 0.4, 0.1, 1e-6);
+  CachedContact kept;
+  f.collider.collidePolygons(f.a, pa, f.b, pb, &kept);
+  const long long before = f.collider.box2dCalls();
+  const Pose moved = pose(pb.x + Vec2(1.01 * kept.slack, 0), 0.4);
+  const ContactGeometry g = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
+  EXPECT_EQ(f.collider.box2dCalls(), before + 1);
+  const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
+  EXPECT_EQ(g.overlap, fresh.overlap);
+  EXPECT_EQ(g.point, fresh.point);
+}
+
+TEST(PolygonCollider, DiscAgainstFaceAndVertexMatchesTheGeometry) {
+  Fixture f;
+  const Pose pa = pose(Vec2(0, 0), 0.0);
+  const double r = 0.002, overlap = 3e-6;
+  // Face: the hexagon's top face is at y = b sin 60° (b = a / 1.5) for |x| < a/2.
+  const double top = 0.0025 / 1.5 * std::sin(kPi / 3);
+  ContactGeometry g = f.collider.collidePolygonDisc(f.a, pa, Vec2(0.0003, top + r - overlap), r);
+  EXPECT_NEAR(g.overlap, overlap, 1e-12);
+  EXPECT_NEAR(g.normal.y(), 1.0, 1e-12);
+  // Vertex: the hexagon's tip at (a, 0), the disc beyond it along +x.
+  g = f.collider.collidePolygonDisc(f.a, pa, Vec2(0.0025 + r - overlap, 0), r);
+  EXPECT_NEAR(g.overlap, overlap, 1e-12);
+  EXPECT_NEAR(g.normal.x(), 1.0, 1e-9);
+  EXPECT_NEAR(g.point.x(), 0.0025 - 0.5 * overlap, 1e-12);
+}
+
+}  // namespace
+}  // namespace grainlab
