@@ -166,8 +166,10 @@ void World::step() {
   if (!prepared_) initialize();
   const double dt = timestep();
   auto t0 = Clock::now();
-  kick(dt);
-  drift(dt);
+  forEachParticleRange([&](int begin, int end) {
+    kick(dt, begin, end);
+    drift(dt, begin, end);
+  });
   auto t1 = Clock::now();
   computeForces();
   profile_.integrate += seconds(t0, t1);
@@ -175,21 +177,26 @@ void World::step() {
   time_ += dt;
 }
 
-void World::kick(double dt) {
-  const int n = size();
-  for (int k = 0; k < n; ++k) {
+void World::forEachParticleRange(const std::function<void(int, int)>& body) {
+  if (pool_) pool_->parallelFor(size(), body);
+  else body(0, size());
+}
+
+void World::kick(double dt, int begin, int end) {
+  for (int k = begin; k < end; ++k) {
     velocity_[k] += force_[k] * (invMass_[k] * dt);
     spin_[k] += torque_[k] * (invInertia_[k] * dt);
   }
 }
 
-void World::drift(double dt) {
-  const int n = size();
-  for (int k = 0; k < n; ++k) {
+void World::drift(double dt, int begin, int end) {
+  for (int k = begin; k < end; ++k) {
     position_[k] += velocity_[k] * dt;
     if (spin_[k] != 0) {
       angle_[k] += spin_[k] * dt;
-      ::sincos(angle_[k], &sin_[k], &cos_[k]);  // glibc: one range reduction for both
+      // Only polygons' contacts depend on their orientation: a disc's rotation is kept in
+      // angle_ alone (sincos was a fifth of a disc pile's step).
+      if (shape_[k] == ShapeKind::Polygon) ::sincos(angle_[k], &sin_[k], &cos_[k]);
     }
   }
 }
@@ -296,10 +303,12 @@ void World::pairForces(const Law& law) {
   });
   const std::vector<int>& start = neighbors_->adjacencyStart();
   const std::vector<int>& entries = neighbors_->adjacency();
+  // The gather also starts each particle from its body force and ends with its local
+  // damping, as the serial path does around its pair loop.
   pool_->parallelFor(size(), [&](int begin, int end) {
     for (int k = begin; k < end; ++k) {
-      Vec2 f = force_[k];
-      double tau = torque_[k];
+      Vec2 f = bodyForce(k);
+      double tau = 0;
       for (int e = start[k]; e < start[k + 1]; ++e) {
         const int pairIndex = entries[static_cast<size_t>(e)] >> 1;
         const PairForce& pf = pairForce_[static_cast<size_t>(pairIndex)];
@@ -314,6 +323,7 @@ void World::pairForces(const Law& law) {
       }
       force_[k] = f;
       torque_[k] = tau;
+      if (material_.localDamping > 0) applyLocalDamping(k);
     }
   });
 }
@@ -359,10 +369,11 @@ void World::computeForces() {
     ++profile_.rebuilds;
   }
   auto t1 = Clock::now();
-  const int n = size();
-  for (int k = 0; k < n; ++k) {
-    force_[k] = motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero();
-    torque_[k] = 0;
+  if (!pool_) {
+    for (int k = 0; k < size(); ++k) {
+      force_[k] = bodyForce(k);
+      torque_[k] = 0;
+    }
   }
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
   // polygon code, a frictionless one keeps no tangential history.
@@ -376,25 +387,25 @@ void World::computeForces() {
         normal, {material_.tangentialStiffness, material_.friction}};
     discsOnly ? pairForces<decltype(law), true>(law) : pairForces<decltype(law), false>(law);
   }
-  if (material_.localDamping > 0) applyLocalDamping();
+  if (!pool_ && material_.localDamping > 0) {
+    for (int k = 0; k < size(); ++k) applyLocalDamping(k);
+  }
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
   profile_.forces += seconds(t1, t2);
   if (polygonCollider_) profile_.box2dCalls = polygonCollider_->box2dCalls();
 }
 
-void World::applyLocalDamping() {
+void World::applyLocalDamping(int k) {
   // Cundall's non-viscous damping: each force component is reduced by α|F| against the
   // direction of motion, so it removes energy without slowing a steady drift.
+  if (motion_[k] != Motion::Dynamic) return;
   const double a = material_.localDamping;
   auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
-  for (int k = 0; k < size(); ++k) {
-    if (motion_[k] != Motion::Dynamic) continue;
-    Vec2& f = force_[k];
-    f.x() -= a * std::abs(f.x()) * sign(velocity_[k].x());
-    f.y() -= a * std::abs(f.y()) * sign(velocity_[k].y());
-    torque_[k] -= a * std::abs(torque_[k]) * sign(spin_[k]);
-  }
+  Vec2& f = force_[k];
+  f.x() -= a * std::abs(f.x()) * sign(velocity_[k].x());
+  f.y() -= a * std::abs(f.y()) * sign(velocity_[k].y());
+  torque_[k] -= a * std::abs(torque_[k]) * sign(spin_[k]);
 }
 
 void World::contacts(std::vector<ContactRecord>& out) const {

@@ -2,6 +2,7 @@
 // The DEM world: particle state in contiguous arrays, a Verlet neighbour list, contact forces
 // from a pluggable contact law, and explicit leapfrog integration in double precision.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -107,13 +108,15 @@ class World {
   const Profile& profile() const { return profile_; }
 
  private:
-  void drift(double dt);
+  void forEachParticleRange(const std::function<void(int, int)>& body);
+  void drift(double dt, int begin, int end);
   void computeForces();
-  void kick(double dt);
+  void kick(double dt, int begin, int end);
+  Vec2 bodyForce(int k) const { return motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero(); }
   void assignDamping();
   ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
   void carryPolygonCache();
-  void applyLocalDamping();
+  void applyLocalDamping(int k);
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
   template <class Law, bool kDiscsOnly>
@@ -133,7 +136,7 @@ class World {
   // Hot state, one entry per particle.
   std::vector<Vec2> position_, velocity_, force_;
   std::vector<double> angle_, spin_, torque_;
-  std::vector<double> cos_, sin_;        // of angle_, refreshed once per step for the colliders
+  std::vector<double> cos_, sin_;        // of angle_, refreshed each step for polygons only
   std::vector<double> invMass_, invInertia_;
   // Cold data.
   std::vector<double> mass_, inertia_, boundingRadius_;
