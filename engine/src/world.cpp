@@ -115,6 +115,35 @@ double World::criticalTimestep() const {
   return dt;
 }
 
+double World::packingTimestep(int* particle, int* contacts) const {
+  std::vector<int> count(static_cast<size_t>(size()), 0);
+  for (const PairState& p : neighbors_->pairs()) {
+    if (p.overlap <= 0) continue;
+    ++count[static_cast<size_t>(p.i)];
+    if (p.j >= 0) ++count[static_cast<size_t>(p.j)];
+  }
+  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
+  const double zeta = dampingRatio(material_.restitution);
+  const double dampingFactor = std::sqrt(1 + zeta * zeta) - zeta;
+  double dt = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < size(); ++k) {
+    if (motion_[k] != Motion::Dynamic || count[static_cast<size_t>(k)] == 0) continue;
+    // The same per-contact stiffness as criticalTimestep(), once per contact; frictionless
+    // contacts have no tangential spring.
+    const double r = boundingRadius_[k];
+    const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
+    const double normal = shape_[k] == ShapeKind::Disc ? kn : kn * rotational;
+    const double stiffest = material_.friction > 0 ? std::max(normal, kt * rotational) : normal;
+    const double bound = dampingFactor * 2.0 * std::sqrt(0.5 * mass_[k] / (stiffest * count[static_cast<size_t>(k)]));
+    if (bound < dt) {
+      dt = bound;
+      if (particle) *particle = k;
+      if (contacts) *contacts = count[static_cast<size_t>(k)];
+    }
+  }
+  return dt;
+}
+
 double World::timestep() const {
   return timestep_ > 0 ? timestep_ : timestepSafety_ * criticalTimestep();
 }

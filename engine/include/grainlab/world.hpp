@@ -60,6 +60,13 @@ class World {
   /// need not pass through the centre). Explicit integration is unstable above it.
   double criticalTimestep() const;
 
+  /// The stability bound of the packing as it now stands, which can be well below the
+  /// single-contact criticalTimestep(): a particle held by Z contacts vibrates up to √Z times
+  /// faster than against one (a Gershgorin bound), and viscous damping of ratio ζ lowers
+  /// leapfrog's limit by the factor √(1+ζ²) − ζ. Infinite with no contacts. `particle` and
+  /// `contacts` (optional) receive the particle that sets it and its contact count.
+  double packingTimestep(int* particle = nullptr, int* contacts = nullptr) const;
+
   /// Prescribed motion of a kinematic particle (ignored for others).
   void setKinematicVelocity(int i, const Vec2& v, double spin = 0);
 
