@@ -79,7 +79,7 @@ class ConsolidationStage : public MembraneStage {
 };
 
 /// Compresses axis 2 at the prescribed rate while a servo holds σ11, up to the target
-/// axial strain. The servo is faster than consolidation's (0.15 wave crossings, the stress
+/// axial strain. The servo is faster than consolidation's (0.1 wave crossings, the stress
 /// measured 4 times per response time) and the lateral rate is capped where the inertial
 /// number reaches 0.8e-3, not at a multiple of the axial rate (docs/biaxial-test.md).
 class BiaxialStage : public MembraneStage {

@@ -54,8 +54,9 @@ class BiaxialProbe : public RunObserver {
 // jumps 100-1000×). σ11 falls with it before any boundary can know: the stress wave has to
 // reach the ring, and the ring may then close in only at the quasi-static cap. Over every
 // stress measurement (not just samples) σ11 is within 2% 99% of the time for the quick discs
-// and 92-95% for the quick elongated specimens (docs/biaxial-test.md), so 40 samples fall
-// below 95% (discs) or 85% (elongated) with probability well under 1%.
+// and 95-96% for the quick elongated specimens (docs/biaxial-test.md): 40 samples then miss
+// 0.4 and 1.8 times on average, and fall below 95% (discs) or 85% (elongated) with
+// probability under 1%.
 void checkBiaxial(const std::string& preset, double minWithin) {
   BiaxialProbe probe;
   const RunSummary summary = runScene(parseScene(presetScene(preset)), probe);
