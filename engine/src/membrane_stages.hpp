@@ -27,8 +27,11 @@ class MembraneStage : public Stage {
   virtual void control() = 0;
   bool timedOut() const { return world_.time() - startTime_ >= spec_.maxTime; }
   std::string endNote() const override;
-  /// A servo whose response time is a few times the time a wave takes to cross the specimen.
-  StressServo makeServo(double target, double maxRate) const;
+  /// A servo whose response time is `crossings` times the time a wave takes to cross the
+  /// specimen.
+  StressServo makeServo(double target, double maxRate, double crossings) const;
+  /// The time a compression wave takes to cross the specimen (modulus ≈ k_n/2), s.
+  double crossingTime() const;
 
   StageSpec spec_;
   World& world_;
@@ -36,6 +39,7 @@ class MembraneStage : public Stage {
   StressTensor stress_;
   double startTime_;
   double sampleInterval_;
+  int measureEvery_;      // steps between stress measurements
   double dtControl_ = 0;  // s between stress measurements
   int stepsSinceMeasure_ = 0;
   bool started_ = false;
@@ -75,7 +79,9 @@ class ConsolidationStage : public MembraneStage {
 };
 
 /// Compresses axis 2 at the prescribed rate while a servo holds σ11, up to the target
-/// axial strain.
+/// axial strain. The servo is faster than consolidation's (0.1 wave crossings, the stress
+/// measured 4 times per response time) and the lateral rate is capped where the inertial
+/// number reaches 0.8e-3, not at a multiple of the axial rate (docs/biaxial-test.md).
 class BiaxialStage : public MembraneStage {
  public:
   BiaxialStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
@@ -88,9 +94,14 @@ class BiaxialStage : public MembraneStage {
  private:
   double axialStrain() const { return 1.0 - membrane_.stretch2() / stretch2Start_; }
   void control() override;
+  /// The largest lateral rate that keeps I = ε̇ d √(ρ/p) at kMaxInertial, with p the
+  /// measured mean stress but never below the held σ11 (p ≥ σ11 while shearing; the floor
+  /// keeps a collapse of p from freezing the ring just when it must close in).
+  double lateralRateCap() const;
   StressServo servo11_;
   double stretch2Start_;
   double sampleStrain_;
+  double meanDiameter_ = 0;  // m, of the specimen particles (equal-area discs)
 };
 
 }  // namespace grainlab
