@@ -59,13 +59,15 @@ RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
   b2_->SetContinuousPhysics(false);
   b2_->SetSubStepping(false);
   b2_->SetWarmStarting(true);
-  // Walls are boxes reaching well past every particle: twice the particles' extent about the
-  // origin, plus ten radii.
+  // Walls are boxes reaching far past every particle: twice the particles' extent about the
+  // origin, plus a thousand mean radii (a block sliding down a slope must not fall off its
+  // end). Their vertices are then ~1e3 units out, where float rounding is ~1e-4 units, 2% of
+  // the slop.
   double extent = 0;
   for (int k = 0; k < n; ++k) {
     extent = std::max(extent, (world.position_[k] - origin_).norm() + world.boundingRadius_[k]);
   }
-  const double halfWidth = 2 * extent * lengthScale_ + 10;
+  const double halfWidth = 2 * extent * lengthScale_ + 1000;
   for (int k = 0; k < n; ++k) addParticle(k);
   for (int w = 0; w < static_cast<int>(world.walls_.size()); ++w) addWall(w, halfWidth);
 }
@@ -117,7 +119,7 @@ void RigidBodySolver::addWall(int index, double halfWidth) {
   const Wall& wall = world_.walls_[static_cast<size_t>(index)];
   const Vec2 n = wall.normal;
   const Vec2 q = (wall.point - origin_) * lengthScale_;
-  const Vec2 foot = q - q.dot(n) * n;
+  const Vec2 foot = q.dot(n) * n;  // the surface's point nearest the origin
   const Vec2 t = perp(n);
   const double skin = b2_polygonRadius, depth = halfWidth;
   b2Vec2 v[4] = {toB2(-halfWidth * t - skin * n), toB2(halfWidth * t - skin * n),
