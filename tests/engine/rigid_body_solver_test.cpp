@@ -105,6 +105,34 @@ void checkStack(bool topFirst) {
 TEST(RigidBodySolver, StackedPolygonsPushEqualAndOpposite) { checkStack(false); }
 TEST(RigidBodySolver, StackedPolygonsPushEqualAndOppositeInEitherCreationOrder) { checkStack(true); }
 
+// A disc resting on a fixed block: Box2D always makes the polygon its A, so with the disc
+// first (i) the normal must be flipped to run from the disc down into the block.
+void checkDiscOnBlock(bool discFirst) {
+  const double r = 0.002;
+  World world(material(3e8, 0.5, 0.5), box2d());
+  ParticleSpec block = box(0.01, 0.004, {0.0, -0.002});
+  block.motion = Motion::Fixed;
+  const ParticleSpec ball = disc(r, {0.001, r});
+  const int d = discFirst ? world.addParticle(ball) : -1;
+  const int b = world.addParticle(block);
+  const int dd = discFirst ? d : world.addParticle(ball);
+  world.setGravity({0, -kG});
+  run(world, 0.2);
+  const auto c = contactsOf(world);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].i, std::min(b, dd));
+  EXPECT_NEAR(c[0].normal.y(), c[0].i == dd ? -1.0 : 1.0, 1e-6);
+  const double weight = world.masses()[dd] * kG;
+  EXPECT_NEAR(c[0].fn, weight, 0.02 * weight);
+  EXPECT_NEAR(c[0].point.x(), 0.001, 1e-6);
+  EXPECT_LT(world.forces()[dd].norm(), 0.02 * weight);
+}
+
+TEST(RigidBodySolver, DiscOnAPolygonPushesDownOnItInEitherCreationOrder) {
+  checkDiscOnBlock(true);
+  checkDiscOnBlock(false);
+}
+
 // A 4 × 2 mm block resting on a slope of angle θ (a tilted wall) under gravity; returns its
 // acceleration down the slope, m/s², measured between 0.05 and 0.15 s.
 // `dtScale` multiplies the default timestep.
