@@ -43,9 +43,10 @@ TEST(Box2dBiaxial, CircularQuickRunsEveryStageWithSigma11Held) {
                s22 = seriesColumnIndex("sigma22");
   EXPECT_NEAR(probe.shearing.back()[strain], 0.2, 0.01);
   std::vector<double> sigma11;
-  int within10 = 0;
+  int within2 = 0, within10 = 0;
   for (const auto& row : probe.shearing) {
     sigma11.push_back(row[s11]);
+    within2 += std::abs(row[s11] - 300e3) < 0.02 * 300e3;
     within10 += std::abs(row[s11] - 300e3) < 0.1 * 300e3;
     if (row[strain] > 0.02) {
       EXPECT_GT(row[s22], row[s11]);  // sheared along 2
@@ -53,8 +54,10 @@ TEST(Box2dBiaxial, CircularQuickRunsEveryStageWithSigma11Held) {
   }
   std::nth_element(sigma11.begin(), sigma11.begin() + sigma11.size() / 2, sigma11.end());
   EXPECT_NEAR(sigma11[sigma11.size() / 2], 300e3, 0.02 * 300e3);
-  // Measured: 95% of the samples within 10% (62% within 2%); the DEM holds 100% and 90%.
-  EXPECT_GE(within10, static_cast<int>(0.85 * probe.shearing.size()));
+  // Measured: 100% of the samples within 10% and 82% within 2% (the DEM: 100% and 90%);
+  // with the DEM's servo settings, 42% and 7%.
+  EXPECT_GE(within10, static_cast<int>(0.9 * probe.shearing.size()));
+  EXPECT_GE(within2, static_cast<int>(0.6 * probe.shearing.size()));
   EXPECT_GT(summary.peakPhiMobDeg, 15.0);
   EXPECT_LT(summary.peakPhiMobDeg, 40.0);
 }
