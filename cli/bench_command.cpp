@@ -16,12 +16,15 @@ struct Result {
   int particles = 0;
   double coordination = 0;  // contacts per particle (×2) when timing starts
   std::vector<double> rates;  // particle-steps per second, one per repeat
+  double timestep = 0;        // s
 };
 
 
-Result measure(const Scene& scene, int steps, int repeats, int threads) {
+Result measure(const Scene& scene, int steps, int repeats, int threads,
+               WorldSettings::Engine engine = WorldSettings::Engine::Dem) {
   WorldSettings settings;
   settings.threads = threads;
+  settings.engine = engine;
   World world(scene.material, settings);
   for (const ParticleSpec& p : scene.particles) world.addParticle(p);
   for (const Wall& w : scene.walls) world.addWall(w);
@@ -32,7 +35,7 @@ Result measure(const Scene& scene, int steps, int repeats, int threads) {
   world.checkHealth();
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
-  Result r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}};
+  Result r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep()};
   std::cerr << "bench: " << scene.name << " settled, timing\n";
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -92,12 +95,24 @@ int benchCommand(const std::vector<std::string>& args) {
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }
+  if (results.empty()) {
+    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile)\n";
+    return 2;
+  }
   if (results.size() == scenes.size()) {
     std::cout << "discs-only path / general path: " << median(results[0].rates) / median(results[1].rates) << "\n";
     std::cout << "polygons / discs: " << median(results[2].rates) / median(results[0].rates) << "\n";
-  } else if (results.empty()) {
-    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile)\n";
-    return 2;
+    // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
+    // step it is slower, per simulated second the timestep ratio counts too.
+    for (size_t k : {size_t{0}, size_t{2}}) {
+      std::cerr << "bench: " << scenes[k].name << " with box2d\n";
+      const Result b = measure(scenes[k], std::max(1, steps / 10), repeats, threads, WorldSettings::Engine::Box2d);
+      const double perStep = median(b.rates) / median(results[k].rates);
+      std::cout << "box2d " << std::setw(14) << b.name << std::setprecision(4) << median(b.rates) / 1e6
+                << " M particle-steps/s: " << perStep << "x the dem per step, "
+                << perStep * b.timestep / results[k].timestep << "x per simulated second (timestep "
+                << b.timestep / results[k].timestep << "x)\n";
+    }
   }
   return 0;
 }

@@ -14,6 +14,11 @@ namespace grainlab {
 RunContext::RunContext(const Scene& scene) : scene_(scene) {
   WorldSettings settings;
   settings.threads = scene.solver.threads;
+  if (scene.solver.engine == SolverSpec::Engine::Box2d) {
+    settings.engine = WorldSettings::Engine::Box2d;
+    settings.velocityIterations = scene.solver.velocityIterations;
+    settings.positionIterations = scene.solver.positionIterations;
+  }
   world_ = std::make_unique<World>(scene.material, settings);
   for (const ParticleSpec& p : scene.particles) world_->addParticle(p);
   if (scene.assembly) {

@@ -32,6 +32,8 @@ class MembraneStage : public Stage {
   StressServo makeServo(double target, double maxRate, double crossings) const;
   /// The time a compression wave takes to cross the specimen (modulus ≈ k_n/2), s.
   double crossingTime() const;
+  // The response time, in wave crossings, for a servo the DEM runs at `demCrossings`.
+  double servoCrossings(double demCrossings) const;
 
   StageSpec spec_;
   World& world_;

@@ -111,9 +111,19 @@ SolverSpec parseSolver(const nlohmann::json& j) {
   if (j.is_null()) return s;
   JsonReader r(j, "solver");
   const std::string engine = r.choice("engine", "dem", {"dem", "box2d"});
-  if (engine == "box2d") {
-    throw SceneError("solver.engine", "the box2d engine is not available in this build; use \"dem\"");
+  s.engine = engine == "box2d" ? SolverSpec::Engine::Box2d : SolverSpec::Engine::Dem;
+  for (const char* key : {"velocity_iterations", "position_iterations"}) {
+    if (!r.has(key)) continue;
+    if (s.engine != SolverSpec::Engine::Box2d) {
+      throw SceneError(r.fieldPath(key), "only the box2d engine has solver iterations (set solver.engine to \"box2d\")");
+    }
+    const nlohmann::json& v = j[key];
+    if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100) {
+      throw SceneError(r.fieldPath(key), "must be an integer in 1..100, got " + v.dump());
+    }
   }
+  s.velocityIterations = static_cast<int>(r.integer("velocity_iterations", s.velocityIterations, 1, 100));
+  s.positionIterations = static_cast<int>(r.integer("position_iterations", s.positionIterations, 1, 100));
   s.timestep = r.number("timestep", 0, 0, kInf);
   s.timestepSafety = r.number("timestep_safety", s.timestepSafety, 0, 10, true);
   s.threads = static_cast<int>(r.integer("threads", s.threads, 1, 64));

@@ -12,6 +12,7 @@
 #include "grainlab/errors.hpp"
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
+#include "rigid_body_solver.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -94,6 +95,7 @@ int World::addWall(const Wall& wall) {
 void World::setFriction(double mu) {
   if (mu == material_.friction) return;
   material_.friction = mu;
+  if (rigid_) rigid_->setFriction(mu);
   // A spring built up under another friction would be stale; frictionless keeps none.
   for (PairState& p : neighbors_->pairs()) p.history = 0;
 }
@@ -145,7 +147,13 @@ double World::packingTimestep(int* particle, int* contacts) const {
 }
 
 double World::timestep() const {
-  return timestep_ > 0 ? timestep_ : timestepSafety_ * criticalTimestep();
+  if (timestep_ > 0) return timestep_;
+  const bool rigid = settings_.engine == WorldSettings::Engine::Box2d;
+  return timestepSafety_ * criticalTimestep() * (rigid ? RigidBodySolver::kTimestepScale : 1.0);
+}
+
+double World::contactStiffness() const {
+  return rigid_ ? rigid_->apparentStiffness(timestep()) : material_.normalStiffness;
 }
 
 void World::setKinematicVelocity(int i, const Vec2& v, double spin) {
@@ -166,6 +174,15 @@ void World::worldVertices(int i, std::vector<Vec2>& out) const {
 }
 
 void World::initialize() {
+  if (settings_.engine == WorldSettings::Engine::Box2d) {
+    criticalTimestep_ = criticalTimestep();
+    prepared_ = true;
+    if (timestep() <= 0 || !std::isfinite(timestep())) {
+      throw SimulationError("no usable timestep: the scene has no particle with mass");
+    }
+    rigid_ = std::make_unique<RigidBodySolver>(*this);  // no spring: no critical-timestep bound
+    return;
+  }
   // Box2D sees polygons scaled to about one unit (its tuning range).
   double meanPolygonRadius = 0;
   for (const Polygon& p : polygons_) meanPolygonRadius += p.circumradius;
@@ -195,6 +212,13 @@ void World::step() {
   if (!prepared_) initialize();
   const double dt = timestep();
   auto t0 = Clock::now();
+  if (rigid_) {
+    rigid_->step(dt);
+    profile_.forces += seconds(t0, Clock::now());
+    ++steps_;
+    time_ += dt;
+    return;
+  }
   forEachParticleRange([&](int begin, int end) {
     kick(dt, begin, end);
     drift(dt, begin, end);
@@ -440,6 +464,7 @@ void World::applyLocalDamping(int k) {
 void World::contacts(std::vector<ContactRecord>& out) const {
   out.clear();
   if (!prepared_) return;
+  if (rigid_) return rigid_->contacts(out);
   const std::vector<PairState>& pairs = neighbors_->pairs();
   for (size_t k = 0; k < pairs.size(); ++k) {
     const PairState& p = pairs[k];
@@ -462,7 +487,8 @@ void World::contacts(std::vector<ContactRecord>& out) const {
 double World::kineticEnergy() const {
   // Velocities live half a step behind the positions (leapfrog); the energy is taken with
   // them brought to the positions' time, v + a·dt/2, as velocity Verlet would report it.
-  const double half = 0.5 * timestep();
+  const double half = rigid_ ? 0.0 : 0.5 * timestep();  // Box2D's velocities are the positions'
+
   double e = 0;
   for (int k = 0; k < size(); ++k) {
     if (motion_[k] != Motion::Dynamic) continue;
@@ -474,6 +500,7 @@ double World::kineticEnergy() const {
 }
 
 double World::elasticEnergy() const {
+  if (rigid_) return 0;
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
@@ -497,6 +524,7 @@ void World::checkHealth() const {
       throw SimulationError(os.str());
     }
   }
+  if (rigid_) rigid_->checkOverlaps();
   for (const PairState& p : neighbors_->pairs()) {
     if (p.overlap <= 0) continue;
     const double size = p.j >= 0 ? std::min(boundingRadius_[p.i], boundingRadius_[p.j]) : boundingRadius_[p.i];

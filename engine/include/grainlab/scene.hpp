@@ -36,11 +36,16 @@ struct BoundarySpec {
   Type type = Type::None;
 };
 
-/// The solver: grainlab's DEM ("solver.engine": "dem", the only engine built so far).
+/// The solver: grainlab's DEM ("solver.engine": "dem") or Box2D's rigid-body solver ("box2d",
+/// engine/src/rigid_body_solver.hpp).
 struct SolverSpec {
-  double timestep = 0;            ///< s; 0 = timestepSafety × critical timestep
+  enum class Engine { Dem, Box2d };
+  Engine engine = Engine::Dem;
+  double timestep = 0;            ///< s; 0 = timestepSafety × critical timestep (box2d: × its own scale)
   double timestepSafety = 0.2;
-  int threads = 1;                ///< force computation threads; results do not depend on it
+  int threads = 1;                ///< force computation threads (dem); results do not depend on it
+  int velocityIterations = 8;     ///< box2d: b2World::Step's velocity iterations
+  int positionIterations = 3;     ///< box2d: b2World::Step's position iterations
 };
 
 struct OutputSpec {

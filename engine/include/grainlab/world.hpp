@@ -19,6 +19,7 @@ namespace grainlab {
 
 class NeighborList;
 class PolygonCollider;
+class RigidBodySolver;
 class WorkerPool;
 struct PairState;
 struct ContactGeometry;
@@ -31,6 +32,12 @@ struct WorldSettings {
   /// Threads for the force computation (the caller's included). Results are bit-identical
   /// for any count: the parallel path adds each particle's forces in the serial order.
   int threads = 1;
+  /// Dem: grainlab's own contact laws and integrator. Box2d: Box2D's rigid-body solver moves
+  /// the particles (RigidBodySolver, engine/src/rigid_body_solver.hpp) and the World's arrays
+  /// mirror its bodies after every step; the DEM members below are then unused.
+  enum class Engine { Dem, Box2d };
+  Engine engine = Engine::Dem;
+  int velocityIterations = 8, positionIterations = 3;  ///< box2d only
 };
 
 class World {
@@ -50,7 +57,8 @@ class World {
   void setFriction(double mu);
   const Material& material() const { return material_; }
 
-  /// Timestep in s. Until set, it is timestepSafety × criticalTimestep().
+  /// Timestep in s. Until set, it is timestepSafety × criticalTimestep() (box2d: × the
+  /// rigid-body timestep scale, RigidBodySolver::timestepScale).
   void setTimestep(double dt) { timestep_ = dt; }
   double timestep() const;
   void setTimestepSafety(double safety) { timestepSafety_ = safety; }
@@ -66,6 +74,11 @@ class World {
   /// leapfrog's limit by the factor √(1+ζ²) − ζ. Infinite with no contacts. `particle` and
   /// `contacts` (optional) receive the particle that sets it and its contact count.
   double packingTimestep(int* particle = nullptr, int* contacts = nullptr) const;
+  WorldSettings::Engine engine() const { return settings_.engine; }
+  /// The normal stiffness a contact shows to slow loading, N/m: k_n for dem; for box2d the
+  /// rigid solver's apparent stiffness (RigidBodySolver::apparentStiffness). Servo gains
+  /// are derived from it.
+  double contactStiffness() const;
 
   /// Prescribed motion of a kinematic particle (ignored for others).
   void setKinematicVelocity(int i, const Vec2& v, double spin = 0);
@@ -109,12 +122,13 @@ class World {
   void contacts(std::vector<ContactRecord>& out) const;
   /// Σ ½ m v² + ½ I ω² over dynamic particles, J per metre.
   double kineticEnergy() const;
-  /// Energy stored in the contact springs, J per metre.
+  /// Energy stored in the contact springs, J per metre (0 for box2d: rigid contacts).
   double elasticEnergy() const;
 
   const Profile& profile() const { return profile_; }
 
  private:
+  friend class RigidBodySolver;  // mirrors the arrays below into its b2World and back
   void forEachParticleRange(const std::function<void(int, int)>& body);
   void drift(double dt, int begin, int end);
   void computeForces();
@@ -164,6 +178,7 @@ class World {
   };
   std::vector<PairForce> pairForce_;     // per pair, for the parallel gather
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
+  std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
   Profile profile_;
 };
 

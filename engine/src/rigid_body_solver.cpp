@@ -1,0 +1,262 @@
+#include "rigid_body_solver.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "grainlab/errors.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab {
+namespace {
+
+b2Vec2 toB2(const Vec2& v) { return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y())); }
+Vec2 fromB2(const b2Vec2& v) { return Vec2(v.x, v.y); }
+
+// Particle index k, or −1 − w for wall w, as a fixture's user data.
+uintptr_t encode(int id) { return static_cast<uintptr_t>(static_cast<intptr_t>(id)); }
+int decode(b2Fixture* f) { return static_cast<int>(static_cast<intptr_t>(f->GetUserData().pointer)); }
+
+// The polygon moved inward by `skin` along every face normal: vertex k is where the offset
+// faces k−1 and k meet, v − skin (n₁ + n₂) / (1 + n₁·n₂). Vertices in Box2D units, CCW.
+b2PolygonShape shrunkPolygon(const Polygon& poly, double scale, double skin) {
+  b2Vec2 v[b2_maxPolygonVertices];
+  const int n = poly.count;
+  for (int k = 0; k < n; ++k) {
+    const Vec2& a = poly.normals[(k + n - 1) % n];
+    const Vec2& b = poly.normals[k];
+    v[k] = toB2(poly.vertices[k] * scale - skin * (a + b) / (1.0 + a.dot(b)));
+  }
+  b2PolygonShape shape;
+  shape.Set(v, n);  // may reorder (convex hull): only Box2D uses this copy
+  if (shape.m_count != n) {
+    throw std::invalid_argument("polygon too small or with edges too short for Box2D's skin (" +
+                                std::to_string(b2_polygonRadius) + " units)");
+  }
+  return shape;
+}
+
+}  // namespace
+
+RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
+  const int n = world.size();
+  double radius = 0, mass = 0;
+  for (int k = 0; k < n; ++k) {
+    radius += world.boundingRadius_[k];
+    mass += world.mass_[k];
+    origin_ += world.position_[k];
+  }
+  if (n > 0) {
+    lengthScale_ = n / radius;
+    massScale_ = n / mass;
+    origin_ /= n;
+  }
+  b2_ = std::make_unique<b2World>(toB2(world.gravity_ * lengthScale_));
+  b2_->SetAllowSleeping(false);
+  b2_->SetContinuousPhysics(false);
+  b2_->SetSubStepping(false);
+  b2_->SetWarmStarting(true);
+  // Walls are boxes reaching far past every particle: twice the particles' extent about the
+  // origin, plus a thousand mean radii (a block sliding down a slope must not fall off its
+  // end). Their vertices are then ~1e3 units out, where float rounding is ~1e-4 units, 2% of
+  // the slop.
+  double extent = 0;
+  for (int k = 0; k < n; ++k) {
+    extent = std::max(extent, (world.position_[k] - origin_).norm() + world.boundingRadius_[k]);
+  }
+  const double halfWidth = 2 * extent * lengthScale_ + 1000;
+  for (int k = 0; k < n; ++k) addParticle(k);
+  for (int w = 0; w < static_cast<int>(world.walls_.size()); ++w) addWall(w, halfWidth);
+}
+
+RigidBodySolver::~RigidBodySolver() = default;
+
+void RigidBodySolver::addParticle(int k) {
+  const World& w = world_;
+  const Motion motion = w.motion_[k];
+  b2BodyDef def;
+  def.type = motion == Motion::Dynamic ? b2_dynamicBody : motion == Motion::Kinematic ? b2_kinematicBody : b2_staticBody;
+  def.position = toB2((w.position_[k] - origin_) * lengthScale_);
+  def.angle = static_cast<float>(w.angle_[k]);
+  def.linearVelocity = toB2(w.velocity_[k] * lengthScale_);
+  def.angularVelocity = static_cast<float>(w.spin_[k]);
+  def.allowSleep = false;
+  def.bullet = false;
+  b2Body* body = b2_->CreateBody(&def);
+
+  b2FixtureDef fixture;
+  fixture.friction = static_cast<float>(w.material_.friction);
+  fixture.restitution = static_cast<float>(w.material_.restitution);
+  fixture.density = 0;  // the mass is set below, from the World's
+  fixture.userData.pointer = encode(k);
+  b2CircleShape circle;
+  b2PolygonShape polygon;
+  if (w.shape_[k] == ShapeKind::Disc) {
+    circle.m_radius = static_cast<float>(w.boundingRadius_[k] * lengthScale_);
+    fixture.shape = &circle;
+  } else {
+    polygon = shrunkPolygon(w.polygon(k), lengthScale_, b2_polygonRadius);
+    fixture.shape = &polygon;
+  }
+  fixtures_.push_back(body->CreateFixture(&fixture));
+  if (motion == Motion::Dynamic) {
+    b2MassData mass;
+    mass.mass = static_cast<float>(w.mass_[k] * massScale_);
+    mass.center.SetZero();  // the body's origin is the particle's centroid
+    mass.I = static_cast<float>(w.inertia_[k] * massScale_ * lengthScale_ * lengthScale_);
+    body->SetMassData(&mass);
+  }
+  bodies_.push_back(body);
+}
+
+void RigidBodySolver::addWall(int index, double halfWidth) {
+  // A half-plane as a static box behind its surface, as deep as it is wide. The body sits at
+  // the surface's point nearest the origin so the box's own coordinates stay small. The box
+  // face is set back by the skin, so the skinned face is the wall's surface.
+  const Wall& wall = world_.walls_[static_cast<size_t>(index)];
+  const Vec2 n = wall.normal;
+  const Vec2 q = (wall.point - origin_) * lengthScale_;
+  const Vec2 foot = q.dot(n) * n;  // the surface's point nearest the origin
+  const Vec2 t = perp(n);
+  const double skin = b2_polygonRadius, depth = halfWidth;
+  b2Vec2 v[4] = {toB2(-halfWidth * t - skin * n), toB2(halfWidth * t - skin * n),
+                 toB2(halfWidth * t - (skin + depth) * n), toB2(-halfWidth * t - (skin + depth) * n)};
+  b2PolygonShape box;
+  box.Set(v, 4);
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  def.position = toB2(foot);
+  b2Body* body = b2_->CreateBody(&def);
+  b2FixtureDef fixture;
+  fixture.shape = &box;
+  fixture.friction = static_cast<float>(world_.material_.friction);
+  fixture.restitution = static_cast<float>(world_.material_.restitution);
+  fixture.userData.pointer = encode(-1 - index);
+  fixtures_.push_back(body->CreateFixture(&fixture));
+}
+
+double RigidBodySolver::apparentStiffness(double dt) const {
+  const double meanMass = 1.0 / massScale_;
+  return 4.0 / 3.0 * world_.settings_.velocityIterations * meanMass / (dt * dt);
+}
+
+void RigidBodySolver::setFriction(double mu) {
+  for (b2Fixture* f : fixtures_) f->SetFriction(static_cast<float>(mu));
+  for (b2Contact* c = b2_->GetContactList(); c; c = c->GetNext()) c->ResetFriction();
+}
+
+void RigidBodySolver::step(double dt) {
+  World& w = world_;
+  const int n = w.size();
+  const double L = lengthScale_;
+  for (int k = 0; k < n; ++k) {
+    if (w.motion_[k] != Motion::Kinematic) continue;
+    b2Body* b = bodies_[static_cast<size_t>(k)];
+    b->SetTransform(toB2((w.position_[k] - origin_) * L), static_cast<float>(w.angle_[k]));
+    b->SetLinearVelocity(toB2(w.velocity_[k] * L));
+    b->SetAngularVelocity(static_cast<float>(w.spin_[k]));
+  }
+  b2_->Step(static_cast<float>(dt), w.settings_.velocityIterations, w.settings_.positionIterations);
+  for (int k = 0; k < n; ++k) {
+    const b2Body* b = bodies_[static_cast<size_t>(k)];
+    switch (w.motion_[k]) {
+      case Motion::Dynamic:
+        w.position_[k] = origin_ + fromB2(b->GetPosition()) / L;
+        w.angle_[k] = b->GetAngle();
+        w.velocity_[k] = fromB2(b->GetLinearVelocity()) / L;
+        w.spin_[k] = b->GetAngularVelocity();
+        break;
+      case Motion::Kinematic:  // in double, as the DEM's drift; Box2D gets it next step
+        w.position_[k] += w.velocity_[k] * dt;
+        w.angle_[k] += w.spin_[k] * dt;
+        break;
+      case Motion::Fixed: break;
+    }
+  }
+  gatherContacts(dt);
+}
+
+void RigidBodySolver::gatherContacts(double dt) {
+  World& w = world_;
+  const double L = lengthScale_;
+  const double toForce = 1.0 / (massScale_ * L * dt);  // Box2D impulse → N per metre
+  contacts_.clear();
+  for (b2Contact* c = b2_->GetContactList(); c; c = c->GetNext()) {
+    if (!c->IsTouching()) continue;
+    const b2Manifold* m = c->GetManifold();
+    if (m->pointCount == 0) continue;
+    b2WorldManifold wm;
+    c->GetWorldManifold(&wm);
+    const int a = decode(c->GetFixtureA()), b = decode(c->GetFixtureB());
+    // i is the particle of lower index (a wall, j < 0, is always j); Box2D's normal runs
+    // from A to B, so it flips when A is j. The tangential force keeps its sign under the
+    // flip (n and t = n turned +90° both reverse): Box2D's tangent is n turned −90°, so
+    // the force on B is λn n − λt t, and on j from i always fn n + ft t with ft = −Σλt/dt.
+    const bool swap = b >= 0 && (a < 0 || b < a);
+    ContactRecord r;
+    r.i = swap ? b : a;
+    r.j = swap ? a : b;
+    const Vec2 normal = fromB2(wm.normal).normalized();
+    r.normal = swap ? Vec2(-normal) : normal;
+    double ln = 0, lt = 0, depth = 0;
+    Vec2 weighted = Vec2::Zero(), mean = Vec2::Zero();
+    for (int k = 0; k < m->pointCount; ++k) {
+      const b2ManifoldPoint& p = m->points[k];
+      const Vec2 x = fromB2(wm.points[k]);
+      ln += p.normalImpulse;
+      lt += p.tangentImpulse;
+      weighted += p.normalImpulse * x;
+      mean += x;
+      depth = std::max(depth, -static_cast<double>(wm.separations[k]));
+    }
+    const Vec2 point = ln > 0 ? Vec2(weighted / ln) : Vec2(mean / m->pointCount);
+    r.point = origin_ + point / L;
+    r.fn = ln * toForce;
+    r.ft = -lt * toForce;
+    r.overlap = depth / L;
+    contacts_.push_back(r);
+  }
+  // The World's forces and torques: the contact forces above and gravity, about the centroids.
+  for (int k = 0; k < w.size(); ++k) {
+    w.force_[k] = w.motion_[k] == Motion::Dynamic ? Vec2(w.mass_[k] * w.gravity_) : Vec2::Zero();
+    w.torque_[k] = 0;
+  }
+  for (const ContactRecord& r : contacts_) {
+    const Vec2 f = r.fn * r.normal + r.ft * perp(r.normal);  // on j from i
+    w.force_[r.i] -= f;
+    w.torque_[r.i] -= cross(r.point - w.position_[r.i], f);
+    if (r.j >= 0) {
+      w.force_[r.j] += f;
+      w.torque_[r.j] += cross(r.point - w.position_[r.j], f);
+    }
+  }
+}
+
+void RigidBodySolver::contacts(std::vector<ContactRecord>& out) const {
+  out = contacts_;
+  std::sort(out.begin(), out.end(), [](const ContactRecord& x, const ContactRecord& y) {
+    return x.i < y.i || (x.i == y.i && x.j < y.j);
+  });
+}
+
+void RigidBodySolver::checkOverlaps() const {
+  for (const ContactRecord& r : contacts_) {
+    const double size = r.j >= 0 ? std::min(world_.boundingRadius_[r.i], world_.boundingRadius_[r.j])
+                                 : world_.boundingRadius_[r.i];
+    if (r.overlap > 0.5 * size) {
+      std::ostringstream os;
+      os << "runaway overlap at step " << world_.stepCount() << ": ";
+      if (r.j >= 0) os << "particles " << r.i << " and " << r.j;
+      else os << "particle " << r.i << " and wall " << r.wallIndex();
+      os << " overlap by " << 100 * r.overlap / size
+         << "% of the smaller particle's radius: Box2D's solver could not keep them apart (raise"
+            " solver.velocity_iterations or solver.position_iterations, or lower the timestep)";
+      throw SimulationError(os.str());
+    }
+  }
+}
+
+}  // namespace grainlab

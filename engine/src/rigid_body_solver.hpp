@@ -1,0 +1,94 @@
+#pragma once
+// The box2d engine ("solver": {"engine": "box2d"}): Box2D's rigid-body solver (b2World,
+// sequential impulses with velocity and position iterations) moves the particles instead of
+// grainlab's springs and leapfrog. The World keeps its arrays as the one state the rest of
+// the program reads: this class mirrors them into a b2World once, steps it, and copies
+// positions, angles, velocities and spins back after every step, with the contact forces
+// (from the solver's impulses) into the World's forces and torques.
+//
+// What it maps, and how:
+//  - Bodies: dynamic particles are dynamic bodies, kinematic ones kinematic bodies (their
+//    velocities, set by World::setKinematicVelocity, are forwarded every step; their
+//    positions are integrated in double by the World, as the DEM does), fixed ones static.
+//    Walls are static boxes behind their surface. No sleeping, no continuous collision.
+//  - Units: Box2D is single precision and tuned for bodies of 0.1-10 units. Lengths are
+//    scaled so the mean particle radius is one unit, masses so the mean mass is one unit,
+//    and coordinates are taken about the initial centre of the particles. Time stays in
+//    seconds. Impulses are converted back exactly: F = λ / (M L dt).
+//  - Shape: each polygon is shrunk inward by Box2D's compiled-in skin b2_polygonRadius
+//    (0.01 units) before Set(), so the skinned (rounded) shape Box2D collides is the true
+//    polygon, except within the skin at the corners (a 120° corner is rounded off by
+//    0.16 skin = 0.0016 units). Walls' boxes are set back by the skin likewise. Discs have
+//    no skin. Set() may reorder vertices: nothing here relies on their order.
+//  - Mass: each body gets the World's mass and inertia (b2Body::SetMassData), not Box2D's
+//    from the shrunk shape.
+//  - Material: friction μ on every fixture (Box2D mixes √(μ₁μ₂) = μ); setFriction updates
+//    the fixtures and every existing contact. Restitution e on every fixture, applied by
+//    Box2D above its restitution threshold, left at its default of one length unit per second
+//    (one mean particle radius per second); slower impacts are perfectly inelastic.
+//  - Not mapped: the contact stiffnesses (contacts are rigid: no elastic energy, overlaps are
+//    only Box2D's slop and solver error) and Cundall's local damping (no counterpart in a
+//    rigid-body solver; Box2D's own damping is viscous and would slow steady motion too).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "grainlab/contact.hpp"
+#include "grainlab/math.hpp"
+
+class b2World;
+class b2Body;
+class b2Fixture;
+
+namespace grainlab {
+
+class World;
+
+class RigidBodySolver {
+ public:
+  /// The default box2d timestep is this multiple of the DEM's (timestep_safety × the critical
+  /// timestep of the scene's springs). See docs/speed-accuracy.md for why.
+  static constexpr double kTimestepScale = 10.0;
+
+  /// Builds the b2World from the World's current particles and walls.
+  explicit RigidBodySolver(World& world);
+  ~RigidBodySolver();
+  RigidBodySolver(const RigidBodySolver&) = delete;
+  RigidBodySolver& operator=(const RigidBodySolver&) = delete;
+
+  /// One b2World::Step of dt, then the World's state, forces and torques from it.
+  void step(double dt);
+  void setFriction(double mu);
+  /// The touching contacts of the last step, sorted by (i, j) as the DEM path's.
+  void contacts(std::vector<ContactRecord>& out) const;
+  /// Throws SimulationError if two bodies overlap by more than half the smaller's radius:
+  /// the solver could not keep them apart.
+  void checkOverlaps() const;
+
+  double lengthScale() const { return lengthScale_; }  ///< Box2D units per metre
+
+  /// The stiffness a contact appears to have under slow loading, N/m: (4 n_v / 3) m̄ / dt²
+  /// for n_v velocity iterations and the mean particle mass m̄. A rigid contact has none, but
+  /// the iteration-limited solver lets a packing take up a boundary strain within Box2D's
+  /// slop, and its stress then grows with that strain as if the contacts were springs of
+  /// this stiffness. Measured on circular-quick after consolidation (p against volumetric
+  /// strain, dp/dε_v = 2.5-3.2 m̄/dt² at 8 iterations, 6.4-6.8 at 20, for dt from 2.4e-5 to
+  /// 1.5e-4 s; the packing's modulus is k/2 as for the DEM's springs).
+  double apparentStiffness(double dt) const;
+
+ private:
+  void addParticle(int k);
+  void addWall(int w, double halfWidth);
+  void gatherContacts(double dt);
+
+  World& world_;
+  double lengthScale_ = 1;  // Box2D units per m
+  double massScale_ = 1;    // Box2D units per kg (per metre of thickness)
+  Vec2 origin_ = Vec2::Zero();
+  std::unique_ptr<b2World> b2_;
+  std::vector<b2Body*> bodies_;     // one per particle, in index order
+  std::vector<b2Fixture*> fixtures_;  // particles' then walls'
+  std::vector<ContactRecord> contacts_;  // in Box2D's contact-list order
+};
+
+}  // namespace grainlab
