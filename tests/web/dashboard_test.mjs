@@ -38,6 +38,20 @@ try {
   check('the form shows the preset\'s friction', (await page.inputValue('#field-friction')) === '0.5');
   check('the form shows the confining stress in kPa', (await page.inputValue('#field-confining')) === '300');
   check('a disc preset hides the bedding angle', !(await page.locator('#field-bedding_angle').isVisible()));
+  check('the form shows the preset\'s engine', (await page.inputValue('#field-engine')) === 'dem');
+  check('the preset\'s own settings are no named fidelity', (await page.inputValue('#field-fidelity')) === 'custom');
+  // A fidelity sets timestep safety, sampling and the shearing rate together (docs/speed-accuracy.md).
+  await page.selectOption('#field-fidelity', 'reference');
+  check('the reference fidelity sets the timestep safety', (await page.inputValue('#field-timestep_safety')) === '0.05');
+  check('the reference fidelity sets the shearing rate for discs (I = 1e-4)', (await page.inputValue('#field-strain_rate')) === '0.266');
+  const edited = JSON.parse(await page.inputValue('textarea.scene-json'));
+  check('the reference fidelity samples every 0.001 of strain', edited.output?.sample_strain === 0.001, JSON.stringify(edited.output));
+  // Back to the preset as it is, for the run below.
+  await page.selectOption('#preset', 'circular');
+  await page.waitForFunction(() => document.querySelector('#field-name')?.value === 'circular');
+  await page.selectOption('#preset', 'circular-quick');
+  await page.waitForFunction(() => document.querySelector('#field-name')?.value === 'circular-quick');
+  check('choosing the preset again restores its settings', (await page.inputValue('#field-fidelity')) === 'custom');
   await page.getByRole('button', { name: 'Start run' }).click();
   await page.waitForURL(/#\/run\/\d+$/);
   const runId = Number(/#\/run\/(\d+)$/.exec(page.url())[1]);

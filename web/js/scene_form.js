@@ -40,6 +40,40 @@ export function setPath(object, path, value) {
 }
 
 const fixed = (path) => () => [path];
+
+/**
+ * The fidelity settings of docs/speed-accuracy.md, measured by `grainlab tradeoff`: timestep
+ * safety, sampling, and the shearing rate that gives the inertial number I for the paper's
+ * particles at 300 kPa (ε̇ = I / (d √(ρ/p))).
+ */
+export const FIDELITY = {
+  draft: { timestepSafety: 0.2, sampleStrain: 0.01, strainRate: { disc: 26.6, elongated: 25.4 } },
+  standard: { timestepSafety: 0.2, sampleStrain: 0.002, strainRate: { disc: 2.66, elongated: 2.54 } },
+  reference: { timestepSafety: 0.05, sampleStrain: 0.001, strainRate: { disc: 0.266, elongated: 0.254 } },
+};
+const biaxialStages = (scene) => (scene.stages ?? []).filter((stage) => stage.type === 'biaxial');
+const particleKind = (scene) => (scene.assembly?.shape === 'elongated' ? 'elongated' : 'disc');
+
+/** The fidelity whose three settings the scene has, or 'custom'. */
+export function sceneFidelity(scene) {
+  const stages = biaxialStages(scene);
+  for (const [name, f] of Object.entries(FIDELITY)) {
+    const safety = scene.solver?.timestep_safety ?? 0.2;  // the engine's default
+    if (safety === f.timestepSafety && scene.output?.sample_strain === f.sampleStrain &&
+        stages.length > 0 && stages.every((stage) => stage.strain_rate === f.strainRate[particleKind(scene)])) {
+      return name;
+    }
+  }
+  return 'custom';
+}
+
+function applyFidelity(scene, name) {
+  const f = FIDELITY[name];
+  if (!f) return;  // 'custom' leaves the scene as it is
+  setPath(scene, 'solver.timestep_safety', f.timestepSafety);
+  setPath(scene, 'output.sample_strain', f.sampleStrain);
+  for (const stage of biaxialStages(scene)) stage.strain_rate = f.strainRate[particleKind(scene)];
+}
 const stagePaths = (types, key) => (scene) =>
   (scene.stages ?? []).flatMap((stage, k) => (types.includes(stage.type) ? [`stages[${k}].${key}`] : []));
 const hasAssembly = (scene) => Boolean(scene.assembly);
@@ -83,8 +117,22 @@ export const SCENE_FIELDS = [
   { key: 'specimen_diameter', label: 'Specimen diameter', unit: 'mm', kind: 'number', factor: 1e-3, paths: fixed('assembly.specimen_diameter'), visible: hasAssembly },
   { section: 'Solver' },
   {
+    key: 'engine', label: 'Engine', kind: 'select', paths: fixed('solver.engine'),
+    options: [['dem', 'DEM (contact springs)'], ['box2d', 'Box2D rigid bodies']], fallback: 'dem',
+    hint: 'box2d: Box2D\'s rigid-body solver (docs/speed-accuracy.md)',
+  },
+  {
     key: 'timestep_safety', label: 'Timestep safety', kind: 'number', paths: fixed('solver.timestep_safety'),
     hint: 'fraction of the critical timestep',
+  },
+  {
+    // Sets three fields at once; shown as 'custom' when the scene matches none of them.
+    key: 'fidelity', label: 'Fidelity', kind: 'select',
+    paths: (scene) => (biaxialStages(scene).length > 0 ? ['solver.timestep_safety'] : []),
+    options: [['custom', 'custom'], ['draft', 'draft (I = 1e-2)'], ['standard', 'standard (I = 1e-3)'],
+      ['reference', 'reference (I = 1e-4, safety 0.05)']],
+    display: sceneFidelity, apply: applyFidelity,
+    hint: 'timestep safety, sampling and shearing rate, measured by grainlab tradeoff',
   },
 ];
 
@@ -95,6 +143,7 @@ export function fieldVisible(field, scene) {
 
 /** The scene's value as the form shows it ('' when the key is absent: the default applies). */
 export function displayValue(field, scene) {
+  if (field.display) return field.display(scene);
   const value = getPath(scene, field.paths(scene)[0]);
   if (value === undefined || value === null) return field.fallback ?? '';
   if (field.kind === 'number' && typeof value === 'number') {
@@ -111,6 +160,10 @@ export function displayValue(field, scene) {
  */
 export function applyValue(field, scene, text) {
   const trimmed = text.trim();
+  if (field.apply) {
+    field.apply(scene, trimmed);
+    return null;
+  }
   let value;
   if (trimmed === '') {
     value = undefined;  // omitted: the engine's documented default
