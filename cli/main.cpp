@@ -26,7 +26,8 @@ int usage(std::ostream& out, int code) {
          "  run --preset NAME --out DIR  run a preset\n"
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
-         "  bench [--steps N]            speed on settled piles of discs and polygons\n"
+         "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
+         "                               speed on settled piles of discs and polygons\n"
          "  paper --out DIR [--quick] [--jobs N] [--report-only]  the paper's six tests, report.html\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER
