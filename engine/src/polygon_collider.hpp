@@ -2,8 +2,7 @@
 // Polygon-polygon and polygon-disc contacts through Box2D's manifold functions
 // (b2CollidePolygons, b2CollidePolygonAndCircle), with its traps handled:
 //  - skin: b2PolygonShape carries b2_polygonRadius (0.01 units) of rounding that would
-//    inflate every overlap. We never use Box2D's depths: the manifold's features (reference
-//    face, incident points) are evaluated here in double precision on the true polygons.
+//    inflate every overlap. We never use Box2D's depths (see below).
 //  - scale and precision: Box2D is single precision and tuned for bodies of 0.1-10 units,
 //    so shapes are scaled to about one unit, and every pair is collided in a frame centred
 //    on its first body (positions differenced in double first), so float rounding is
@@ -69,14 +68,14 @@ class PolygonCollider {
   /// Contact of polygon a with a disc of radius rb at xb; normal from the polygon to the disc.
   ContactGeometry collidePolygonDisc(int a, const Pose& pa, const Vec2& xb, double rb,
                                      CachedContact* cache = nullptr) const;
-  /// Cached features measured at the given poses, without asking Box2D: polygon a with
-  /// polygon b, or (b < 0) with a disc of radius rb centred at pb.x.
-  ContactGeometry evaluate(const CachedContact& cache, int a, const Pose& pa, int b, const Pose& pb, double rb) const;
 
   /// Box2D calls made so far (manifold refreshes), for the profile.
   long long box2dCalls() const { return calls_.load(std::memory_order_relaxed); }
 
  private:
+  // Cached features measured at the given poses, without asking Box2D: polygon a with
+  // polygon b, or (b < 0) with a disc of radius rb centred at pb.x.
+  ContactGeometry evaluate(const CachedContact& cache, int a, const Pose& pa, int b, const Pose& pb, double rb) const;
   bool stillHolds(const CachedContact& cache, double ra, const Pose& pa, double rb, const Pose& pb) const;
   void anchor(CachedContact& cache, const Pose& pa, const Pose& pb) const;
   // The widest gap between a and b along an edge normal of either (<= 0 if they overlap).

@@ -100,20 +100,22 @@ void World::setFriction(double mu) {
   for (PairState& p : neighbors_->pairs()) p.history = 0;
 }
 
+double World::stiffestSpring(int k, bool tangential) const {
+  // A force at the bounding radius R, off the centre's line, moves the contact point as if
+  // the mass were m / (1 + m R²/I). A disc's normal force passes through its centre; a
+  // polygon's need not.
+  const double r = boundingRadius_[k];
+  const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
+  const double normal = material_.normalStiffness * (shape_[k] == ShapeKind::Disc ? 1.0 : rotational);
+  return tangential ? std::max(normal, material_.tangentialStiffness * rotational) : normal;
+}
+
 double World::criticalTimestep() const {
   if (prepared_) return criticalTimestep_;
   double dt = std::numeric_limits<double>::infinity();
-  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
-  for (int k = 0; k < size(); ++k) {
-    // A force at the bounding radius R, off the centre's line, moves the contact point as if
-    // the mass were m / (1 + m R²/I). A disc's normal force passes through its centre; a
-    // polygon's need not.
-    const double r = boundingRadius_[k];
-    const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
-    const double normal = shape_[k] == ShapeKind::Disc ? kn : kn * rotational;
-    const double stiffest = std::max(normal, kt * rotational);
-    dt = std::min(dt, 2.0 * std::sqrt(0.5 * mass_[k] / stiffest));
-  }
+  // The tangential spring counts whatever the friction now: it is cached once for the run,
+  // and friction may change between stages.
+  for (int k = 0; k < size(); ++k) dt = std::min(dt, 2.0 * std::sqrt(0.5 * mass_[k] / stiffestSpring(k, true)));
   return dt;
 }
 
@@ -124,18 +126,14 @@ double World::packingTimestep(int* particle, int* contacts) const {
     ++count[static_cast<size_t>(p.i)];
     if (p.j >= 0) ++count[static_cast<size_t>(p.j)];
   }
-  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
   const double zeta = dampingRatio(material_.restitution);
   const double dampingFactor = std::sqrt(1 + zeta * zeta) - zeta;
   double dt = std::numeric_limits<double>::infinity();
   for (int k = 0; k < size(); ++k) {
     if (motion_[k] != Motion::Dynamic || count[static_cast<size_t>(k)] == 0) continue;
-    // The same per-contact stiffness as criticalTimestep(), once per contact; frictionless
-    // contacts have no tangential spring.
-    const double r = boundingRadius_[k];
-    const double rotational = 1.0 + mass_[k] * r * r / inertia_[k];
-    const double normal = shape_[k] == ShapeKind::Disc ? kn : kn * rotational;
-    const double stiffest = material_.friction > 0 ? std::max(normal, kt * rotational) : normal;
+    // The same spring as criticalTimestep(), once per contact; frictionless contacts (the
+    // friction as it is now) have no tangential spring.
+    const double stiffest = stiffestSpring(k, material_.friction > 0);
     const double bound = dampingFactor * 2.0 * std::sqrt(0.5 * mass_[k] / (stiffest * count[static_cast<size_t>(k)]));
     if (bound < dt) {
       dt = bound;

@@ -129,6 +129,8 @@ class World {
 
  private:
   friend class RigidBodySolver;  // mirrors the arrays below into its b2World and back
+  // Particle k's stiffest contact spring as seen through its rotational inertia (N/m).
+  double stiffestSpring(int k, bool tangential) const;
   void forEachParticleRange(const std::function<void(int, int)>& body);
   void drift(double dt, int begin, int end);
   void computeForces();
