@@ -56,6 +56,8 @@ constexpr const char* kMigrations[] = {
       PRIMARY KEY (run_id, seq)
     );
     )sql",
+    // 1 -> 2: the simulation thread's CPU time, beside its wall time.
+    "ALTER TABLE runs ADD COLUMN cpu_seconds REAL;",
 };
 
 // Every statement the server runs, by name.
@@ -63,10 +65,10 @@ namespace sql {
 // The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
 constexpr const char* kListRuns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg FROM runs ORDER BY id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds FROM runs ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg FROM runs "
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds FROM runs "
     "WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
@@ -102,7 +104,7 @@ constexpr const char* kInsertFrame =
     "VALUES (:id, :seq, :step, :time, :data)";
 constexpr const char* kFinishRun =
     "UPDATE runs SET status = :status, error = :error, stage = :stage, finished_at = :finished_at, "
-    "wall_seconds = :wall_seconds, steps = :steps, particles = :particles, "
+    "wall_seconds = :wall_seconds, cpu_seconds = :cpu_seconds, steps = :steps, particles = :particles, "
     "peak_phi_mob_deg = :peak, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
     "WHERE id = :id";
 constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
@@ -142,6 +144,7 @@ RunRecord readRun(StatementUse& use) {
   r.finishedAt = optionalAt(use, 12);
   r.wallSeconds = optionalAt(use, 13);
   r.peakPhiMobDeg = optionalAt(use, 14);
+  r.cpuSeconds = optionalAt(use, 15);
   return r;
 }
 
@@ -475,6 +478,7 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
           .bind(":steps", end.steps)
           .bind(":particles", end.particles);
       bindOptional(use, ":wall_seconds", end.wallSeconds);
+      bindOptional(use, ":cpu_seconds", end.cpuSeconds);
       bindOptional(use, ":peak", end.peakPhiMobDeg);
       use.run();
     }

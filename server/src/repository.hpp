@@ -28,6 +28,7 @@ struct RunEnd {
   std::string stage;
   double finishedAt = 0;
   std::optional<double> wallSeconds;
+  std::optional<double> cpuSeconds;
   std::int64_t steps = 0;
   int particles = 0;
   std::optional<double> peakPhiMobDeg;

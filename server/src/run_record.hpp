@@ -33,6 +33,7 @@ struct RunRecord {
   double createdAt = 0;            ///< Unix seconds
   std::optional<double> startedAt, finishedAt;
   std::optional<double> wallSeconds;    ///< the simulation's own wall time
+  std::optional<double> cpuSeconds;     ///< CPU time of the thread that ran it (see run_service)
   std::optional<double> peakPhiMobDeg;
 };
 

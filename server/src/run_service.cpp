@@ -19,6 +19,14 @@
 namespace grainlab::server {
 namespace {
 
+// CPU time of the calling thread. The simulation's own work does not depend on who watches,
+// so its wall time over this is what waiting (for a core, or for anything else) cost it.
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 nlohmann::json orNull(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
@@ -181,6 +189,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 
   RunSummary summary;
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = threadCpuSeconds();
   if (run->stopRequested()) {
     summary.status = "cancelled";  // stopped between leaving the queue and starting
   } else {
@@ -197,6 +206,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   // The server's own clock around the whole run, observers included: what streaming costs
   // shows up here.
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = threadCpuSeconds() - cpu0;
 
   RunEnd end;
   end.status = summary.status;
@@ -215,6 +225,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   end.stage = state.stage;
   end.finishedAt = unixNow();
   end.wallSeconds = wall;
+  end.cpuSeconds = cpu;
   end.steps = summary.steps > 0 ? summary.steps : state.steps;
   end.particles = summary.particles > 0 ? summary.particles : state.particles;
   if (end.status == status::kCompleted || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
@@ -293,6 +304,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       {"queue_seconds", merged.startedAt ? nlohmann::json(*merged.startedAt - merged.createdAt)
                                          : nlohmann::json(nullptr)},
       {"wall_seconds", orNull(merged.wallSeconds)},
+      {"cpu_seconds", orNull(merged.cpuSeconds)},
       {"peak_phi_mob_deg", orNull(merged.peakPhiMobDeg)},
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
   };

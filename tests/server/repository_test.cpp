@@ -62,6 +62,7 @@ TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
   end.status = "completed";
   end.finishedAt = 1700000002.0;
   end.wallSeconds = 0.75;
+  end.cpuSeconds = 0.5;
   end.steps = 20;
   end.particles = 3;
   bool published = false;
@@ -74,6 +75,7 @@ TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
   EXPECT_EQ(run->status, "completed");
   EXPECT_DOUBLE_EQ(run->progress, 1.0);
   EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
+  EXPECT_DOUBLE_EQ(*run->cpuSeconds, 0.5);
   EXPECT_DOUBLE_EQ(*run->startedAt, 1700000001.0);
   EXPECT_EQ(run->scene, R"({"name":"a"})");
 
@@ -133,6 +135,34 @@ TEST(Repository, ReadsBetweenWritesLeaveNoStatementOpen) {
   }
   repo.flush().get();
   EXPECT_EQ(repo.samples(id).size(), 50u);
+}
+
+TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
+  const auto path = freshDb("upgrade");
+  std::int64_t id = 0;
+  {
+    Repository repo(path);
+    id = repo.insertRun(queued("old")).get();
+    RunEnd end;
+    end.status = "completed";
+    end.finishedAt = 1700000002.0;
+    end.wallSeconds = 0.75;
+    repo.finishRun(id, end, {});
+    repo.flush().get();
+  }
+  {
+    // What a version-1 database looked like: no cpu_seconds column.
+    Database db(path, true);
+    db.exec("ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
+  }
+  Repository repo(path);
+  auto run = repo.findRun(id);
+  ASSERT_TRUE(run);
+  EXPECT_EQ(run->name, "old");
+  EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
+  EXPECT_FALSE(run->cpuSeconds);
+  Database db(path, false);
+  EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
 }
 
 TEST(Repository, RefusesADatabaseFromANewerProgram) {

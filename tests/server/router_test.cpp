@@ -98,6 +98,10 @@ TEST_F(RouterTest, ARunGoesFromCreateToCompletedWithItsSeries) {
   EXPECT_EQ(run["name"], "tiny");
   EXPECT_EQ(run["progress"], 1.0);
   EXPECT_TRUE(run["wall_seconds"].is_number());
+  // One thread's CPU time cannot exceed the wall time around it (clock ticks aside).
+  ASSERT_TRUE(run["cpu_seconds"].is_number());
+  EXPECT_GE(run["cpu_seconds"].get<double>(), 0.0);
+  EXPECT_LE(run["cpu_seconds"].get<double>(), run["wall_seconds"].get<double>() + 0.01);
   EXPECT_TRUE(run["created_at"].get<std::string>().ends_with("Z"));
   EXPECT_EQ(run["scene"]["name"], "tiny");
 

@@ -55,6 +55,25 @@ TEST(StreamHub, EveryWatcherGetsTheSameBuffer) {
   EXPECT_EQ(a->last, b->last);
 }
 
+TEST(StreamHub, ThePublisherPaysOneDispatchPerMessageHoweverManyWatch) {
+  // The server dispatches to its I/O strand; here the jobs are only collected, so anything a
+  // sink did on the publishing thread would show before they run.
+  StreamHub hub;
+  std::vector<std::function<void()>> jobs;
+  hub.setDispatcher([&](std::function<void()> job) { jobs.push_back(std::move(job)); });
+  hub.open(1);
+  std::vector<std::shared_ptr<RecordingSink>> sinks;
+  for (int k = 0; k < 50; ++k) {
+    sinks.push_back(std::make_shared<RecordingSink>());
+    ASSERT_TRUE(hub.subscribe(1, sinks.back()));
+  }
+  for (int m = 0; m < 3; ++m) hub.publish(1, msg(MessageKind::Frame, "f" + std::to_string(m)));
+  EXPECT_EQ(jobs.size(), 3u);
+  for (const auto& sink : sinks) EXPECT_TRUE(sink->got.empty());
+  for (auto& job : jobs) job();
+  for (const auto& sink : sinks) EXPECT_EQ(sink->got, (std::vector<std::string>{"f0", "f1", "f2"}));
+}
+
 TEST(StreamHub, ForgetsWatchersThatAreGone) {
   StreamHub hub;
   hub.open(1);
