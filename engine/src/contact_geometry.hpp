@@ -19,6 +19,12 @@ struct ContactGeometry {
   double overlap = -1;         ///< m, > 0 when touching
 };
 
+/// A touching pair's geometry and the pair's index in the neighbour list.
+struct TouchingContact {
+  ContactGeometry geometry;
+  int pair = 0;
+};
+
 /// Up to two manifold points (Box2D's limit) reduced as described above.
 struct ManifoldPoints {
   int count = 0;

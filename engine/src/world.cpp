@@ -279,27 +279,15 @@ ContactGeometry World::pairGeometry(const PairState& p, CachedContact* cache) co
   return g;
 }
 
-// The force of one pair: F on j from i (−F on i), and the torques it exerts about each
-// centroid. Returns false if the pair is not touching (its history is then cleared).
-template <class Law, bool kDiscsOnly>
-inline bool World::pairForce(PairState& p, const Law& law, double dt, Vec2& F, double& ti, double& tj) {
+// The force of a touching pair with geometry g: F on j from i (−F on i), and the torques it
+// exerts about each centroid. Updates the pair's history and last forces.
+template <class Law>
+inline void World::contactForce(PairState& p, const ContactGeometry& g, const Law& law, double dt, Vec2& F,
+                                double& ti, double& tj) const {
   const int i = p.i, j = p.j;
   const Vec2* x = position_.data();
   const Vec2* v = velocity_.data();
   const double* w = spin_.data();
-  const double* radius = boundingRadius_.data();
-  ContactGeometry g;
-  if constexpr (kDiscsOnly) {
-    g = j >= 0 ? collideDiscs(x[i], radius[i], x[j], radius[j])
-               : collideDiscWall(x[i], radius[i], walls_[static_cast<size_t>(-1 - j)]);
-  } else {
-    g = pairGeometry(p, &polygonCache_[static_cast<size_t>(&p - neighbors_->pairs().data())]);
-  }
-  if (g.overlap <= 0) {
-    p.history = 0;
-    p.fn = p.ft = p.overlap = 0;
-    return false;
-  }
   const Vec2& n = g.normal;
   const Vec2 t = perp(n);
   const Vec2 ri = g.point - x[i];
@@ -318,28 +306,73 @@ inline bool World::pairForce(PairState& p, const Law& law, double dt, Vec2& F, d
   p.fn = fn;
   p.ft = ft;
   p.overlap = g.overlap;
-  return true;
+}
+
+namespace {
+// A pair that does not touch keeps no history and reports no force.
+void clearContact(PairState& p) {
+  p.history = 0;
+  p.fn = p.ft = p.overlap = 0;
+}
+}  // namespace
+
+// Calls force(k, g) for each touching pair k in [begin, end), in pair order. A disc contact's
+// force hangs on a long chain of dependent operations (a square root, a division, then the
+// law); in one pass the core overlapped only about two pairs' chains. So discs take two:
+// every touching pair's geometry into `scratch` (room for end - begin), then the forces.
+// Each chain is half as long, more pairs are in flight, and a settled disc pile's step got
+// about 1.3x faster with bit-identical results. Polygons, whose geometry dominates, gained
+// nothing from it and keep one pass.
+template <bool kDiscsOnly, class Force>
+inline void World::forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force) {
+  PairState* pairs = neighbors_->pairs().data();
+  if constexpr (kDiscsOnly) {
+    const Vec2* x = position_.data();
+    const double* radius = boundingRadius_.data();
+    int n = 0;
+    for (int k = begin; k < end; ++k) {
+      PairState& p = pairs[k];
+      const ContactGeometry g = p.j >= 0 ? collideDiscs(x[p.i], radius[p.i], x[p.j], radius[p.j])
+                                         : collideDiscWall(x[p.i], radius[p.i], walls_[static_cast<size_t>(-1 - p.j)]);
+      if (g.overlap <= 0) {
+        clearContact(p);
+        continue;
+      }
+      scratch[n].geometry = g;
+      scratch[n].pair = k;
+      ++n;
+    }
+    for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].geometry);
+  } else {
+    for (int k = begin; k < end; ++k) {
+      const ContactGeometry g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)]);
+      if (g.overlap > 0) force(k, g);
+      else clearContact(pairs[k]);
+    }
+  }
 }
 
 template <class Law, bool kDiscsOnly>
 void World::pairForces(const Law& law) {
   const double dt = timestep();
   std::vector<PairState>& pairs = neighbors_->pairs();
+  if constexpr (kDiscsOnly) touching_.resize(pairs.size());
   if (!pool_) {
     // Serial: accumulate as we go.
     Vec2* f = force_.data();
     double* tau = torque_.data();
-    Vec2 F;
-    double ti, tj;
-    for (PairState& p : pairs) {
-      if (!pairForce<Law, kDiscsOnly>(p, law, dt, F, ti, tj)) continue;
+    forEachTouching<kDiscsOnly>(0, static_cast<int>(pairs.size()), touching_.data(), [&](int k, const ContactGeometry& g) {
+      PairState& p = pairs[static_cast<size_t>(k)];
+      Vec2 F;
+      double ti, tj;
+      contactForce(p, g, law, dt, F, ti, tj);
       f[p.i] -= F;
       tau[p.i] -= ti;
       if (p.j >= 0) {
         f[p.j] += F;
         tau[p.j] += tj;
       }
-    }
+    });
     return;
   }
   // Parallel: each pair's force goes to its own slot, then each particle gathers its pairs
@@ -347,10 +380,13 @@ void World::pairForces(const Law& law) {
   // loop above, so the result is bit-identical whatever the number of threads.
   pairForce_.resize(pairs.size());
   pool_->parallelFor(static_cast<int>(pairs.size()), [&](int begin, int end) {
-    for (int k = begin; k < end; ++k) {
+    for (int k = begin; k < end; ++k) pairForce_[static_cast<size_t>(k)].touching = false;
+    TouchingContact* scratch = kDiscsOnly ? touching_.data() + begin : nullptr;  // this range's own part
+    forEachTouching<kDiscsOnly>(begin, end, scratch, [&](int k, const ContactGeometry& g) {
       PairForce& out = pairForce_[static_cast<size_t>(k)];
-      out.touching = pairForce<Law, kDiscsOnly>(pairs[static_cast<size_t>(k)], law, dt, out.force, out.torqueI, out.torqueJ);
-    }
+      contactForce(pairs[static_cast<size_t>(k)], g, law, dt, out.force, out.torqueI, out.torqueJ);
+      out.touching = true;
+    });
   });
   const std::vector<int>& start = neighbors_->adjacencyStart();
   const std::vector<int>& entries = neighbors_->adjacency();

@@ -23,6 +23,7 @@ class RigidBodySolver;
 class WorkerPool;
 struct PairState;
 struct ContactGeometry;
+struct TouchingContact;
 struct CachedContact;
 
 struct WorldSettings {
@@ -142,8 +143,11 @@ class World {
   void applyLocalDamping(int k);
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
-  template <class Law, bool kDiscsOnly>
-  bool pairForce(PairState& pair, const Law& law, double dt, Vec2& force, double& torqueI, double& torqueJ);
+  template <bool kDiscsOnly, class Force>
+  void forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force);
+  template <class Law>
+  void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
+                    double& torqueI, double& torqueJ) const;
 
   Material material_;
   WorldSettings settings_;
@@ -179,6 +183,7 @@ class World {
     bool touching = false;
   };
   std::vector<PairForce> pairForce_;     // per pair, for the parallel gather
+  std::vector<TouchingContact> touching_;  // discs only: scratch for the two-pass force loop
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
   Profile profile_;
