@@ -321,7 +321,7 @@ void clearContact(PairState& p) {
 // law); in one pass the core overlapped only about two pairs' chains. So discs take two:
 // every touching pair's geometry into `scratch` (room for end - begin), then the forces.
 // Each chain is half as long, more pairs are in flight, and a settled disc pile's step got
-// about 1.3x faster with bit-identical results. Polygons, whose geometry dominates, gained
+// 1.2-1.3x faster with bit-identical results. Polygons, whose geometry dominates, gained
 // nothing from it and keep one pass.
 template <bool kDiscsOnly, class Force>
 inline void World::forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force) {
