@@ -19,7 +19,7 @@ constexpr int kLeft = 62, kRight = 18, kTop = 34, kBottom = 78;  // px of margin
 // Colour per axis in a fixed order, so the two panels agree.
 size_t axisIndex(const std::string& axis) {
   static const std::vector<std::string> order{"reference", "noise", "baseline", "timestep_safety", "inertial_number",
-                                              "vertices", "sample_strain", "engine"};
+                                              "vertices", "sample_strain", "engine", "box2d"};
   const auto it = std::find(order.begin(), order.end(), axis);
   return static_cast<size_t>(it - order.begin());
 }

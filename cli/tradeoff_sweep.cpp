@@ -38,7 +38,8 @@ json& biaxialStage(json& scene) {
 
 bool Setting::sameRun(const Setting& o) const {
   return preset == o.preset && timestepSafety == o.timestepSafety && inertialNumber == o.inertialNumber &&
-         sampleStrain == o.sampleStrain && vertices == o.vertices && engine == o.engine;
+         sampleStrain == o.sampleStrain && vertices == o.vertices && engine == o.engine &&
+         velocityIterations == o.velocityIterations;
 }
 
 SweepPlan fullPlan() {
@@ -48,6 +49,9 @@ SweepPlan fullPlan() {
   p.inertialNumbers = {1e-2, 3e-3, 1e-3, 3e-4, 1e-4};
   p.sampleStrains = {0.001, 0.002, 0.005, 0.01};
   p.vertexCounts = {4, 6, 8};
+  // box2d's default is 8 iterations at safety 0.2 (its step 10x the DEM's): the engine axis.
+  p.box2dVelocityIterations = {4, 20};
+  p.box2dTimestepSafeties = {0.06, 0.6};
   p.baseline.timestepSafety = 0.2;
   p.baseline.inertialNumber = 1e-3;
   p.baseline.sampleStrain = 0.005;
@@ -63,6 +67,7 @@ SweepPlan quickPlan() {
   p.timestepSafeties = {0.2, 0.4};
   p.inertialNumbers = {1e-2, 3e-3};
   p.sampleStrains = {0.005, 0.01};
+  p.box2dVelocityIterations = {20};
   p.baseline.timestepSafety = 0.2;
   p.baseline.inertialNumber = 1e-2;
   p.baseline.sampleStrain = 0.01;
@@ -110,6 +115,18 @@ std::vector<Setting> expandPlan(const SweepPlan& plan, const std::optional<std::
     if (plan.engineAxis && !box2dRefusal) {
       add("engine", "dem", [](Setting&) {});
       add("engine", "box2d", [](Setting& s) { s.engine = "box2d"; });
+      for (int v : plan.box2dVelocityIterations) {
+        add("box2d", "velocity_iterations " + std::to_string(v), [&](Setting& s) {
+          s.engine = "box2d";
+          s.velocityIterations = v;
+        });
+      }
+      for (double v : plan.box2dTimestepSafeties) {
+        add("box2d", "timestep_safety " + text(v), [&](Setting& s) {
+          s.engine = "box2d";
+          s.timestepSafety = v;
+        });
+      }
     }
   }
   return out;
@@ -139,6 +156,7 @@ json settingScene(const Setting& s) {
   scene["name"] = s.preset + " " + s.axis + " " + s.value;
   scene["solver"]["timestep_safety"] = s.timestepSafety;
   scene["solver"]["engine"] = s.engine;
+  if (s.velocityIterations > 0) scene["solver"]["velocity_iterations"] = s.velocityIterations;
   scene["output"]["sample_strain"] = s.sampleStrain;
   if (s.vertices > 0) scene["assembly"]["vertices"] = s.vertices;
   biaxialStage(scene)["strain_rate"] = strainRateFor(scene, s.inertialNumber);

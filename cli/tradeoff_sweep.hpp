@@ -14,7 +14,8 @@ struct Setting {
   std::string preset;
   /// Which knob this point turns: "reference", "noise" (the baseline with a 1% longer
   /// timestep: how far chaos alone moves the measures), "timestep_safety",
-  /// "inertial_number", "vertices", "sample_strain" or "engine".
+  /// "inertial_number", "vertices", "sample_strain", "engine" or "box2d" (the box2d engine's
+  /// own knobs: its velocity iterations and its timestep).
   std::string axis;
   std::string value;              ///< the knob's value as shown in the CSV and the plot
   double timestepSafety = 0.2;    ///< fraction of the critical timestep
@@ -22,6 +23,7 @@ struct Setting {
   double sampleStrain = 0.005;    ///< axial strain between shearing samples
   int vertices = 0;               ///< polygon vertex count; 0 = the preset's (and for discs)
   std::string engine = "dem";
+  int velocityIterations = 0;     ///< box2d's velocity iterations; 0 = the engine's default
   /// Same scene, so the same run: the baseline appears on every axis but runs once.
   bool sameRun(const Setting& other) const;
 };
@@ -34,9 +36,13 @@ struct SweepPlan {
   Setting baseline, reference;              ///< preset and axis are filled per point
   bool noiseProbe = true;
   bool engineAxis = true;                   ///< try solver.engine "box2d"
+  /// box2d's own knobs, around the baseline run through box2d (only with the engine axis).
+  std::vector<int> box2dVelocityIterations;
+  std::vector<double> box2dTimestepSafeties;
 };
 
-/// Timestep safety 0.05..0.4, I 1e-2..1e-4, vertices 4/6/8, sample strain 0.001..0.01, on
+/// Timestep safety 0.05..0.4, I 1e-2..1e-4, vertices 4/6/8, sample strain 0.001..0.01, the
+/// box2d engine with 4 and 20 velocity iterations and at safety 0.06 and 0.6, on
 /// circular-quick and elongated-bedding-30-quick; reference: safety 0.05, I = 1e-4,
 /// sample strain 0.001.
 SweepPlan fullPlan();

@@ -53,7 +53,7 @@ AxisTicks niceAxis(double lo, double hi, int target) {
 
 const std::string& paletteColour(size_t index) {
   static const std::vector<std::string> colours{"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                                "#E69F00", "#56B4E9", "#000000"};
+                                                "#E69F00", "#56B4E9", "#000000", "#999999", "#8C510A"};
   return colours[index % colours.size()];
 }
 
