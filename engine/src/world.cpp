@@ -316,15 +316,16 @@ void clearContact(PairState& p) {
 }
 }  // namespace
 
-// Calls force(k, g) for each touching pair k in [begin, end), in pair order. A disc contact's
+// Calls force(k, g) for each touching pair k in [begin, end), in pair order, and apart(k) for
+// each other one (after clearing its state). A disc contact's
 // force hangs on a long chain of dependent operations (a square root, a division, then the
 // law); in one pass the core overlapped only about two pairs' chains. So discs take two:
 // every touching pair's geometry into `scratch` (room for end - begin), then the forces.
 // Each chain is half as long, more pairs are in flight, and a settled disc pile's step got
 // 1.2-1.3x faster with bit-identical results. Polygons, whose geometry dominates, gained
 // nothing from it and keep one pass.
-template <bool kDiscsOnly, class Force>
-inline void World::forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force) {
+template <bool kDiscsOnly, class Force, class Apart>
+inline void World::forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force, Apart&& apart) {
   PairState* pairs = neighbors_->pairs().data();
   if constexpr (kDiscsOnly) {
     const Vec2* x = position_.data();
@@ -336,6 +337,7 @@ inline void World::forEachTouching(int begin, int end, TouchingContact* scratch,
                                          : collideDiscWall(x[p.i], radius[p.i], walls_[static_cast<size_t>(-1 - p.j)]);
       if (g.overlap <= 0) {
         clearContact(p);
+        apart(k);
         continue;
       }
       scratch[n].geometry = g;
@@ -346,8 +348,12 @@ inline void World::forEachTouching(int begin, int end, TouchingContact* scratch,
   } else {
     for (int k = begin; k < end; ++k) {
       const ContactGeometry g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)]);
-      if (g.overlap > 0) force(k, g);
-      else clearContact(pairs[k]);
+      if (g.overlap > 0) {
+        force(k, g);
+      } else {
+        clearContact(pairs[k]);
+        apart(k);
+      }
     }
   }
 }
@@ -372,7 +378,7 @@ void World::pairForces(const Law& law) {
         f[p.j] += F;
         tau[p.j] += tj;
       }
-    });
+    }, [](int) {});
     return;
   }
   // Parallel: each pair's force goes to its own slot, then each particle gathers its pairs
@@ -380,13 +386,12 @@ void World::pairForces(const Law& law) {
   // loop above, so the result is bit-identical whatever the number of threads.
   pairForce_.resize(pairs.size());
   pool_->parallelFor(static_cast<int>(pairs.size()), [&](int begin, int end) {
-    for (int k = begin; k < end; ++k) pairForce_[static_cast<size_t>(k)].touching = false;
     TouchingContact* scratch = kDiscsOnly ? touching_.data() + begin : nullptr;  // this range's own part
     forEachTouching<kDiscsOnly>(begin, end, scratch, [&](int k, const ContactGeometry& g) {
       PairForce& out = pairForce_[static_cast<size_t>(k)];
       contactForce(pairs[static_cast<size_t>(k)], g, law, dt, out.force, out.torqueI, out.torqueJ);
       out.touching = true;
-    });
+    }, [&](int k) { pairForce_[static_cast<size_t>(k)].touching = false; });
   });
   const std::vector<int>& start = neighbors_->adjacencyStart();
   const std::vector<int>& entries = neighbors_->adjacency();

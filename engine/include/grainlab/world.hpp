@@ -143,8 +143,8 @@ class World {
   void applyLocalDamping(int k);
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
-  template <bool kDiscsOnly, class Force>
-  void forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force);
+  template <bool kDiscsOnly, class Force, class Apart>
+  void forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force, Apart&& apart);
   template <class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
