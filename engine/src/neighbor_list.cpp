@@ -6,19 +6,18 @@
 
 namespace grainlab {
 
-bool NeighborList::update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
-                          std::span<const Motion> motions, std::span<const Wall> walls, double skin) {
-  if (valid_ && skin == skin_ && reference_.size() == positions.size()) {
-    const double limit2 = 0.25 * skin * skin;  // half the skin, squared
-    bool moved = false;
-    for (size_t k = 0; k < positions.size(); ++k) {
-      if ((positions[k] - reference_[k]).squaredNorm() > limit2) {
-        moved = true;
-        break;
-      }
-    }
-    if (!moved) return false;
+bool NeighborList::outdated(std::span<const Vec2> positions, int begin, int end) const {
+  if (reference_.size() != positions.size()) return true;
+  const double limit2 = 0.25 * skin_ * skin_;  // half the skin, squared
+  for (int k = begin; k < end; ++k) {
+    if ((positions[k] - reference_[k]).squaredNorm() > limit2) return true;
   }
+  return false;
+}
+
+bool NeighborList::update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+                          std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved) {
+  if (valid_ && !moved && skin == skin_ && reference_.size() == positions.size()) return false;
   build(positions, boundingRadii, motions, walls, skin);
   return true;
 }

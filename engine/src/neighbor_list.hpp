@@ -25,9 +25,14 @@ struct PairState {
 
 class NeighborList {
  public:
-  /// Rebuilds if needed; returns true if it did.
+  /// True if some particle in [begin, end) has moved more than half the skin since the last
+  /// build, or the list was built for another number of particles. Reads only that range, so
+  /// each thread can check the particles it has just moved while they are in its cache.
+  bool outdated(std::span<const Vec2> positions, int begin, int end) const;
+  /// Rebuilds if `moved` (some range was outdated()), if invalidated, or if the skin changed;
+  /// returns true if it did.
   bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
-              std::span<const Motion> motions, std::span<const Wall> walls, double skin);
+              std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved);
   /// Forces a rebuild at the next update (particles or walls were added).
   void invalidate() { valid_ = false; }
 

@@ -52,7 +52,7 @@ void WorkerPool::parallelFor(int n, const std::function<void(int, int)>& body) {
   pending_.store(t - 1, std::memory_order_relaxed);
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
-  body(0, n / t);  // the caller's slice
+  body(0, sliceBegin(n, 1, t));  // the caller's slice
   for (;;) {
     const int left = pending_.load(std::memory_order_acquire);
     if (left == 0) break;
@@ -67,9 +67,7 @@ void WorkerPool::work(int index) {
     seen = generation_.load(std::memory_order_acquire);
     if (stop_.load()) return;
     const int t = threads();
-    const int begin = static_cast<int>(static_cast<long long>(n_) * index / t);
-    const int end = static_cast<int>(static_cast<long long>(n_) * (index + 1) / t);
-    (*body_)(begin, end);
+    (*body_)(sliceBegin(n_, index, t), sliceBegin(n_, index + 1, t));
     if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_one();
   }
 }

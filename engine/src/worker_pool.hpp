@@ -20,6 +20,11 @@ class WorkerPool {
   /// Calls body(begin, end) on `threads()` contiguous slices of [0, n) and returns when all
   /// are done. The slicing depends only on n and threads(), never on timing.
   void parallelFor(int n, const std::function<void(int, int)>& body);
+  /// Where parallelFor's slice `index` of [0, n) begins (slice `slices` begins at n), so a
+  /// caller can plan around the slicing before the loop runs.
+  static int sliceBegin(int n, int index, int slices) {
+    return static_cast<int>(static_cast<long long>(n) * index / slices);
+  }
 
  private:
   void work(int index);

@@ -203,6 +203,7 @@ void World::initialize() {
           " solver.timestep or solver.timestep_safety below 1)";
     throw SimulationError(os.str());
   }
+  resetForces(0, size());
   computeForces();
 }
 
@@ -220,6 +221,8 @@ void World::step() {
   forEachParticleRange([&](int begin, int end) {
     kick(dt, begin, end);
     drift(dt, begin, end);
+    resetForces(begin, end);  // while the particles are in cache
+    if (neighbors_->outdated(position_, begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
   });
   auto t1 = Clock::now();
   computeForces();
@@ -237,6 +240,14 @@ void World::kick(double dt, int begin, int end) {
   for (int k = begin; k < end; ++k) {
     velocity_[k] += force_[k] * (invMass_[k] * dt);
     spin_[k] += torque_[k] * (invInertia_[k] * dt);
+  }
+}
+
+// Each particle's force before its contacts: its weight.
+void World::resetForces(int begin, int end) {
+  for (int k = begin; k < end; ++k) {
+    force_[k] = bodyForce(k);
+    torque_[k] = 0;
   }
 }
 
@@ -381,43 +392,84 @@ void World::pairForces(const Law& law) {
     }, [](int) {});
     return;
   }
-  // Parallel: each pair's force goes to its own slot, then each particle gathers its pairs
-  // in pair order. Every particle sees the same additions in the same order as the serial
-  // loop above, so the result is bit-identical whatever the number of threads.
-  pairForce_.resize(pairs.size());
+  // Parallel: each thread takes a contiguous slice of the pairs. A particle's shares from the
+  // slice holding its first pair are added at once, as the serial loop adds them; shares from
+  // later slices wait in their slots (assignDeferredSlots) and are added after the loop, in
+  // pair order. Every particle sees the same additions in the same order as the serial loop,
+  // so the result is bit-identical whatever the number of threads. In a scene whose particle
+  // indices follow space, few particles straddle two slices and almost nothing waits.
+  Vec2* f = force_.data();
+  double* tau = torque_.data();
+  const int* slot = deferredSlot_.data();
+  DeferredForce* deferred = deferred_.data();
   pool_->parallelFor(static_cast<int>(pairs.size()), [&](int begin, int end) {
     TouchingContact* scratch = kDiscsOnly ? touching_.data() + begin : nullptr;  // this range's own part
     forEachTouching<kDiscsOnly>(begin, end, scratch, [&](int k, const ContactGeometry& g) {
-      PairForce& out = pairForce_[static_cast<size_t>(k)];
-      contactForce(pairs[static_cast<size_t>(k)], g, law, dt, out.force, out.torqueI, out.torqueJ);
-      out.touching = true;
-    }, [&](int k) { pairForce_[static_cast<size_t>(k)].touching = false; });
+      PairState& p = pairs[static_cast<size_t>(k)];
+      Vec2 F;
+      double ti, tj;
+      contactForce(p, g, law, dt, F, ti, tj);
+      // x − y and x + (−y) are the same IEEE operation: a waiting share is stored negated.
+      if (const int s = slot[2 * k]; s < 0) {
+        f[p.i] -= F;
+        tau[p.i] -= ti;
+      } else {
+        deferred[s] = {-F, -ti, true};
+      }
+      if (p.j < 0) return;
+      if (const int s = slot[2 * k + 1]; s < 0) {
+        f[p.j] += F;
+        tau[p.j] += tj;
+      } else {
+        deferred[s] = {F, tj, true};
+      }
+    }, [&](int k) {
+      if (const int s = slot[2 * k]; s >= 0) deferred[s].touching = false;
+      if (const int s = slot[2 * k + 1]; s >= 0) deferred[s].touching = false;
+    });
   });
-  const std::vector<int>& start = neighbors_->adjacencyStart();
-  const std::vector<int>& entries = neighbors_->adjacency();
-  // The gather also starts each particle from its body force and ends with its local
-  // damping, as the serial path does around its pair loop.
+  // The waiting shares, then each particle's local damping, as the serial path ends.
+  if (deferred_.empty() && material_.localDamping == 0) return;
   pool_->parallelFor(size(), [&](int begin, int end) {
     for (int k = begin; k < end; ++k) {
-      Vec2 f = bodyForce(k);
-      double tau = 0;
-      for (int e = start[k]; e < start[k + 1]; ++e) {
-        const int pairIndex = entries[static_cast<size_t>(e)] >> 1;
-        const PairForce& pf = pairForce_[static_cast<size_t>(pairIndex)];
-        if (!pf.touching) continue;
-        if (entries[static_cast<size_t>(e)] & 1) {  // k is the pair's j
-          f += pf.force;
-          tau += pf.torqueJ;
-        } else {
-          f -= pf.force;
-          tau -= pf.torqueI;
-        }
+      for (int s = deferredStart_[k]; s < deferredStart_[k + 1]; ++s) {
+        const DeferredForce& d = deferred[s];
+        if (!d.touching) continue;
+        f[k] += d.force;
+        tau[k] += d.torque;
       }
-      force_[k] = f;
-      torque_[k] = tau;
       if (material_.localDamping > 0) applyLocalDamping(k);
     }
   });
+}
+
+// Which pair ends the parallel force loop adds at once and which wait, for the current pair
+// list and number of threads. Particle k belongs to the slice holding its first pair; a share
+// computed in any other slice (a later one: pairs are in order) gets a slot.
+void World::assignDeferredSlots() {
+  const int pairCount = static_cast<int>(neighbors_->pairs().size());
+  const int threads = pool_->threads();
+  const std::vector<int>& start = neighbors_->adjacencyStart();
+  const std::vector<int>& entries = neighbors_->adjacency();
+  std::vector<int> sliceEnd(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t) sliceEnd[static_cast<size_t>(t)] = WorkerPool::sliceBegin(pairCount, t + 1, threads);
+  auto sliceOf = [&](int pair) {
+    return static_cast<int>(std::upper_bound(sliceEnd.begin(), sliceEnd.end(), pair) - sliceEnd.begin());
+  };
+  deferredSlot_.assign(2 * static_cast<size_t>(pairCount), -1);
+  deferredStart_.assign(static_cast<size_t>(size()) + 1, 0);
+  int slots = 0;
+  for (int k = 0; k < size(); ++k) {
+    deferredStart_[k] = slots;
+    if (start[k] == start[k + 1]) continue;
+    const int owner = sliceOf(entries[static_cast<size_t>(start[k])] >> 1);
+    for (int e = start[k]; e < start[k + 1]; ++e) {
+      const int pairEnd = entries[static_cast<size_t>(e)];  // pair × 2, + 1 where k is its j
+      if (sliceOf(pairEnd >> 1) != owner) deferredSlot_[static_cast<size_t>(pairEnd)] = slots++;
+    }
+  }
+  deferredStart_[size()] = slots;
+  deferred_.assign(static_cast<size_t>(slots), DeferredForce{});
 }
 
 void World::assignDamping() {
@@ -450,7 +502,8 @@ void World::computeForces() {
   auto t0 = Clock::now();
   bool rebuilt = false;
   try {
-    rebuilt = neighbors_->update(position_, boundingRadius_, motion_, walls_, skin_);
+    rebuilt = neighbors_->update(position_, boundingRadius_, motion_, walls_, skin_,
+                                 neighborsOutdated_.exchange(false, std::memory_order_relaxed));
   } catch (const std::domain_error&) {
     checkHealth();  // names the particle and the likely cause
     throw;
@@ -460,13 +513,8 @@ void World::computeForces() {
     if (!polygons_.empty()) carryPolygonCache();
     ++profile_.rebuilds;
   }
+  if (pool_ && (rebuilt || deferredStart_.size() != static_cast<size_t>(size()) + 1)) assignDeferredSlots();
   auto t1 = Clock::now();
-  if (!pool_) {
-    for (int k = 0; k < size(); ++k) {
-      force_[k] = bodyForce(k);
-      torque_[k] = 0;
-    }
-  }
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
   // polygon code, a frictionless one keeps no tangential history.
   const LinearSpringDashpot normal{material_.normalStiffness};

@@ -1,6 +1,7 @@
 #pragma once
 // The DEM world: particle state in contiguous arrays, a Verlet neighbour list, contact forces
 // from a pluggable contact law, and explicit leapfrog integration in double precision.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -138,6 +139,8 @@ class World {
   void kick(double dt, int begin, int end);
   Vec2 bodyForce(int k) const { return motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero(); }
   void assignDamping();
+  void resetForces(int begin, int end);
+  void assignDeferredSlots();
   ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
   void carryPolygonCache();
   void applyLocalDamping(int k);
@@ -175,14 +178,22 @@ class World {
   std::vector<Wall> walls_;
 
   std::unique_ptr<NeighborList> neighbors_;
+  // Set by the step's integration pass when some particle moved far enough to need a new
+  // neighbour list; each thread checks its own particles, so none reads the others' lines.
+  std::atomic<bool> neighborsOutdated_{true};
   std::unique_ptr<PolygonCollider> polygonCollider_;
   std::unique_ptr<WorkerPool> pool_;     // null when serial
-  struct PairForce {
-    Vec2 force = Vec2::Zero();            // on j from i
-    double torqueI = 0, torqueJ = 0;      // r × F about each centroid
-    bool touching = false;
+  // Parallel force loop: a pair's share of force on a particle is added at once by the thread
+  // that owns the particle (the one computing its first pair); a share computed by another
+  // thread waits in a slot and is added after the loop, in pair order.
+  struct DeferredForce {
+    Vec2 force = Vec2::Zero();            // to add to the particle's force
+    double torque = 0;                    // to add to its torque
+    bool touching = false;                // false: the pair was apart, nothing to add
   };
-  std::vector<PairForce> pairForce_;     // per pair, for the parallel gather
+  std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
+  std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
+  std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
   std::vector<TouchingContact> touching_;  // discs only: scratch for the two-pass force loop
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
