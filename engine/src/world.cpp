@@ -219,9 +219,7 @@ void World::step() {
     return;
   }
   forEachParticleRange([&](int begin, int end) {
-    kick(dt, begin, end);
-    drift(dt, begin, end);
-    resetForces(begin, end);  // while the particles are in cache
+    advance(dt, begin, end);
     if (neighbors_->outdated(position_, begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
   });
   auto t1 = Clock::now();
@@ -236,10 +234,30 @@ void World::forEachParticleRange(const std::function<void(int, int)>& body) {
   else body(0, size());
 }
 
-void World::kick(double dt, int begin, int end) {
+// Kick, drift and the next force's start, particle by particle in one pass: the particle's
+// data is loaded once (three loops over the particles took a fifth of a disc pile's step).
+void World::advance(double dt, int begin, int end) {
+  // Local pointers: through the members, every store would make the compiler reload them.
+  Vec2* __restrict x = position_.data();
+  Vec2* __restrict v = velocity_.data();
+  Vec2* __restrict f = force_.data();
+  double* __restrict angle = angle_.data();
+  double* __restrict w = spin_.data();
+  double* __restrict tau = torque_.data();
+  const double* invMass = invMass_.data();
+  const double* invInertia = invInertia_.data();
   for (int k = begin; k < end; ++k) {
-    velocity_[k] += force_[k] * (invMass_[k] * dt);
-    spin_[k] += torque_[k] * (invInertia_[k] * dt);
+    v[k] += f[k] * (invMass[k] * dt);
+    w[k] += tau[k] * (invInertia[k] * dt);
+    x[k] += v[k] * dt;
+    if (w[k] != 0) {
+      angle[k] += w[k] * dt;
+      // Only polygons' contacts depend on their orientation: a disc's rotation is kept in
+      // angle_ alone (sincos was a fifth of a disc pile's step).
+      if (shape_[k] == ShapeKind::Polygon) ::sincos(angle[k], &sin_[k], &cos_[k]);
+    }
+    f[k] = bodyForce(k);
+    tau[k] = 0;
   }
 }
 
@@ -248,18 +266,6 @@ void World::resetForces(int begin, int end) {
   for (int k = begin; k < end; ++k) {
     force_[k] = bodyForce(k);
     torque_[k] = 0;
-  }
-}
-
-void World::drift(double dt, int begin, int end) {
-  for (int k = begin; k < end; ++k) {
-    position_[k] += velocity_[k] * dt;
-    if (spin_[k] != 0) {
-      angle_[k] += spin_[k] * dt;
-      // Only polygons' contacts depend on their orientation: a disc's rotation is kept in
-      // angle_ alone (sincos was a fifth of a disc pile's step).
-      if (shape_[k] == ShapeKind::Polygon) ::sincos(angle_[k], &sin_[k], &cos_[k]);
-    }
   }
 }
 

@@ -134,9 +134,8 @@ class World {
   // Particle k's stiffest contact spring as seen through its rotational inertia (N/m).
   double stiffestSpring(int k, bool tangential) const;
   void forEachParticleRange(const std::function<void(int, int)>& body);
-  void drift(double dt, int begin, int end);
   void computeForces();
-  void kick(double dt, int begin, int end);
+  void advance(double dt, int begin, int end);
   Vec2 bodyForce(int k) const { return motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero(); }
   void assignDamping();
   void resetForces(int begin, int end);
