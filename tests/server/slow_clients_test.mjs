@@ -8,7 +8,9 @@
 // thread is 1 plus that waiting share, measured within one run, so it does not move when a
 // shared machine runs faster or slower; wall time alone did (the same unwatched run took
 // 1.15-1.70 s within one minute here, and CI failed on it). The test compares medians of
-// wall/cpu over runs with and without watchers, alternated; wall times are printed too.
+// wall/cpu over runs with and without watchers, alternated; wall times are printed too. Over
+// the limit, it measures as many pairs again and judges on all of them (a burst on the host
+// is not in every pair; a real cost is).
 import { check, finish, getJson, postJson, startServer, waitFor, watch } from './harness.mjs';
 
 const PRESET = process.env.GRAINLAB_STREAM_PRESET ?? 'circular-quick';
@@ -40,25 +42,36 @@ try {
   const loaded = [];  // { wall, cpu } with CLIENTS watching
   let readersOk = true;
   let frames = 0;
-  for (let r = 0; r < REPEATS; r++) {
-    base.push(await oneRun(0));
-    const run = await oneRun(CLIENTS);
-    loaded.push(run);
-    readersOk &&= run.readers.every((g) => g.status.at(-1)?.status === 'completed' && g.frames.length > 0 && g.closeCode === 1000);
-    frames += run.readers.reduce((n, g) => n + g.frames.length, 0) / run.readers.length;
+  async function pairs(count) {
+    for (let r = 0; r < count; r++) {
+      base.push(await oneRun(0));
+      const run = await oneRun(CLIENTS);
+      loaded.push(run);
+      readersOk &&= run.readers.every((g) => g.status.at(-1)?.status === 'completed' && g.frames.length > 0 && g.closeCode === 1000);
+      frames += run.readers.reduce((n, g) => n + g.frames.length, 0) / run.readers.length;
+    }
+  }
+  const slowdown = () => median(loaded.map((r) => r.wall / r.cpu)) / median(base.map((r) => r.wall / r.cpu));
+  await pairs(REPEATS);
+  if (slowdown() > LIMIT) {
+    // A burst on the shared host can hold the simulation thread off its core through several
+    // runs in a row. Judge on twice as many alternated pairs before calling it a regression:
+    // a real cost (a 20 µs stall per watcher measured 1.50) is in every pair, a burst is not.
+    console.log(`# slowdown ${((slowdown() - 1) * 100).toFixed(1)}% over ${REPEATS} pairs: measuring ${REPEATS} more`);
+    await pairs(REPEATS);
   }
   const show = (xs) => xs.map((x) => x.toFixed(3)).join(' ');
   const wallBase = base.map((r) => r.wall);
   const wallLoaded = loaded.map((r) => r.wall);
   const waitBase = base.map((r) => r.wall / r.cpu);
   const waitLoaded = loaded.map((r) => r.wall / r.cpu);
-  const ratio = median(waitLoaded) / median(waitBase);
+  const ratio = slowdown();
   console.log(`# wall seconds, nobody watching: ${show(wallBase)} (median ${median(wallBase).toFixed(3)})`);
   console.log(`# wall seconds, ${CLIENTS} watching (1 never reading): ${show(wallLoaded)} (median ${median(wallLoaded).toFixed(3)})`);
   console.log(`# wall/cpu of the simulation thread, nobody watching: ${show(waitBase)} (median ${median(waitBase).toFixed(3)})`);
   console.log(`# wall/cpu of the simulation thread, ${CLIENTS} watching: ${show(waitLoaded)} (median ${median(waitLoaded).toFixed(3)})`);
   console.log(`# slowdown ${((ratio - 1) * 100).toFixed(1)}% (wall medians alone: ${((median(wallLoaded) / median(wallBase) - 1) * 100).toFixed(1)}%); ` +
-              `${(frames / REPEATS).toFixed(0)} frames per reader per run`);
+              `${(frames / loaded.length).toFixed(0)} frames per reader per run`);
   check(`${CLIENTS - 1} reading clients each saw every run to 'completed' with frames`, readersOk);
   check('every run reports the CPU time of its simulation thread',
         [...base, ...loaded].every((r) => Number.isFinite(r.cpu) && r.cpu > 0 && r.cpu <= r.wall + 0.01));
