@@ -44,7 +44,7 @@ TEST(Determinism, QuickPresetRepeatsBitForBit) {
 TEST(Determinism, ThreadCountDoesNotChangeABit) {
   for (const char* preset : {"circular-quick", "elongated-random-quick"}) {
     Scene scene = parseScene(presetScene(preset));
-    scene.stages.resize(1);  // compaction: thousands of steps with contacts forming
+    scene.stages.resize(1);  // compaction: the preset's own membrane and servo, loose still
     scene.stages[0].maxTime = 0.05;
     Recorder serial, parallel;
     ASSERT_EQ(runScene(scene, serial).status, "completed");
