@@ -519,7 +519,7 @@ void World::computeForces() {
     if (!polygons_.empty()) carryPolygonCache();
     ++profile_.rebuilds;
   }
-  if (pool_ && (rebuilt || deferredStart_.size() != static_cast<size_t>(size()) + 1)) assignDeferredSlots();
+  if (pool_ && rebuilt) assignDeferredSlots();  // the slots follow the pair list
   auto t1 = Clock::now();
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
   // polygon code, a frictionless one keeps no tangential history.
