@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "contact_geometry.hpp"
 #include "contact_law.hpp"
@@ -203,7 +204,7 @@ void World::initialize() {
           " solver.timestep or solver.timestep_safety below 1)";
     throw SimulationError(os.str());
   }
-  resetForces(0, size());
+  for (int k = 0; k < size(); ++k) resetForce(k);
   computeForces();
 }
 
@@ -256,16 +257,8 @@ void World::advance(double dt, int begin, int end) {
       // angle_ alone (sincos was a fifth of a disc pile's step).
       if (shape_[k] == ShapeKind::Polygon) ::sincos(angle[k], &sin_[k], &cos_[k]);
     }
-    f[k] = bodyForce(k);
+    f[k] = bodyForce(k);  // resetForce(k), through the restrict pointers
     tau[k] = 0;
-  }
-}
-
-// Each particle's force before its contacts: its weight.
-void World::resetForces(int begin, int end) {
-  for (int k = begin; k < end; ++k) {
-    force_[k] = bodyForce(k);
-    torque_[k] = 0;
   }
 }
 
@@ -375,40 +368,25 @@ inline void World::forEachTouching(int begin, int end, TouchingContact* scratch,
   }
 }
 
+// One thread, or several each on a contiguous slice of the pairs. A particle's shares from
+// the slice holding its first pair are added at once, in pair order; shares computed in later
+// slices wait in their slots (assignDeferredSlots) and are added after the loop, in pair order.
+// Every particle sees the same additions in the same order whatever the number of threads, so
+// the result is bit-identical. With one thread there are no slots: every share is added at
+// once. In a scene whose particle indices follow space, almost nothing waits.
 template <class Law, bool kDiscsOnly>
 void World::pairForces(const Law& law) {
   const double dt = timestep();
   std::vector<PairState>& pairs = neighbors_->pairs();
   if constexpr (kDiscsOnly) touching_.resize(pairs.size());
-  if (!pool_) {
-    // Serial: accumulate as we go.
-    Vec2* f = force_.data();
-    double* tau = torque_.data();
-    forEachTouching<kDiscsOnly>(0, static_cast<int>(pairs.size()), touching_.data(), [&](int k, const ContactGeometry& g) {
-      PairState& p = pairs[static_cast<size_t>(k)];
-      Vec2 F;
-      double ti, tj;
-      contactForce(p, g, law, dt, F, ti, tj);
-      f[p.i] -= F;
-      tau[p.i] -= ti;
-      if (p.j >= 0) {
-        f[p.j] += F;
-        tau[p.j] += tj;
-      }
-    }, [](int) {});
-    return;
-  }
-  // Parallel: each thread takes a contiguous slice of the pairs. A particle's shares from the
-  // slice holding its first pair are added at once, as the serial loop adds them; shares from
-  // later slices wait in their slots (assignDeferredSlots) and are added after the loop, in
-  // pair order. Every particle sees the same additions in the same order as the serial loop,
-  // so the result is bit-identical whatever the number of threads. In a scene whose particle
-  // indices follow space, few particles straddle two slices and almost nothing waits.
   Vec2* f = force_.data();
   double* tau = torque_.data();
-  const int* slot = deferredSlot_.data();
+  const int* slot = pool_ ? deferredSlot_.data() : nullptr;
   DeferredForce* deferred = deferred_.data();
-  pool_->parallelFor(static_cast<int>(pairs.size()), [&](int begin, int end) {
+  // `threaded` is std::true_type when slices may share particles: one thread's loop then
+  // carries no test for slots at all.
+  auto pairRange = [&](auto threaded, int begin, int end) {
+    constexpr bool kThreaded = decltype(threaded)::value;
     TouchingContact* scratch = kDiscsOnly ? touching_.data() + begin : nullptr;  // this range's own part
     forEachTouching<kDiscsOnly>(begin, end, scratch, [&](int k, const ContactGeometry& g) {
       PairState& p = pairs[static_cast<size_t>(k)];
@@ -416,29 +394,35 @@ void World::pairForces(const Law& law) {
       double ti, tj;
       contactForce(p, g, law, dt, F, ti, tj);
       // x − y and x + (−y) are the same IEEE operation: a waiting share is stored negated.
-      if (const int s = slot[2 * k]; s < 0) {
+      if (const int s = kThreaded ? slot[2 * k] : -1; s < 0) {
         f[p.i] -= F;
         tau[p.i] -= ti;
       } else {
         deferred[s] = {-F, -ti, true};
       }
       if (p.j < 0) return;
-      if (const int s = slot[2 * k + 1]; s < 0) {
+      if (const int s = kThreaded ? slot[2 * k + 1] : -1; s < 0) {
         f[p.j] += F;
         tau[p.j] += tj;
       } else {
         deferred[s] = {F, tj, true};
       }
     }, [&](int k) {
-      if (const int s = slot[2 * k]; s >= 0) deferred[s].touching = false;
-      if (const int s = slot[2 * k + 1]; s >= 0) deferred[s].touching = false;
+      if constexpr (kThreaded) {
+        if (const int s = slot[2 * k]; s >= 0) deferred[s].touching = false;
+        if (const int s = slot[2 * k + 1]; s >= 0) deferred[s].touching = false;
+      }
     });
-  });
-  // The waiting shares, then each particle's local damping, as the serial path ends.
+  };
+  const int pairCount = static_cast<int>(pairs.size());
+  if (pool_) pool_->parallelFor(pairCount, [&](int begin, int end) { pairRange(std::true_type{}, begin, end); });
+  else pairRange(std::false_type{}, 0, pairCount);
+  // The waiting shares, then each particle's local damping.
   if (deferred_.empty() && material_.localDamping == 0) return;
-  pool_->parallelFor(size(), [&](int begin, int end) {
+  forEachParticleRange([&](int begin, int end) {
     for (int k = begin; k < end; ++k) {
-      for (int s = deferredStart_[k]; s < deferredStart_[k + 1]; ++s) {
+      const int first = slot ? deferredStart_[k] : 0, last = slot ? deferredStart_[k + 1] : 0;
+      for (int s = first; s < last; ++s) {
         const DeferredForce& d = deferred[s];
         if (!d.touching) continue;
         f[k] += d.force;
@@ -532,9 +516,6 @@ void World::computeForces() {
     const ContactLaw<LinearSpringDashpot, CundallStrack> law{
         normal, {material_.tangentialStiffness, material_.friction}};
     discsOnly ? pairForces<decltype(law), true>(law) : pairForces<decltype(law), false>(law);
-  }
-  if (!pool_ && material_.localDamping > 0) {
-    for (int k = 0; k < size(); ++k) applyLocalDamping(k);
   }
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);

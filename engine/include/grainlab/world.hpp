@@ -138,7 +138,11 @@ class World {
   void advance(double dt, int begin, int end);
   Vec2 bodyForce(int k) const { return motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero(); }
   void assignDamping();
-  void resetForces(int begin, int end);
+  // A particle's force before its contacts: its weight.
+  void resetForce(int k) {
+    force_[k] = bodyForce(k);
+    torque_[k] = 0;
+  }
   void assignDeferredSlots();
   ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
   void carryPolygonCache();
