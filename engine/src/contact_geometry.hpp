@@ -19,9 +19,20 @@ struct ContactGeometry {
   double overlap = -1;         ///< m, > 0 when touching
 };
 
-/// A touching pair's geometry and the pair's index in the neighbour list.
-struct TouchingContact {
-  ContactGeometry geometry;
+/// A disc's contact, reduced to what its force needs. The contact point lies on the line of
+/// centres, `armI` from i's centre along the normal and `armJ` from j's against it, so a
+/// spin moves the point only along the tangent and the normal force exerts no torque: the
+/// force needs neither the point nor the lever vectors.
+struct DiscContact {
+  Vec2 normal = Vec2::Zero();  ///< unit, from disc i to disc j (or into the wall)
+  double overlap = -1;         ///< m, > 0 when touching
+  double armI = 0;             ///< m, from i's centre to the contact point
+  double armJ = 0;             ///< m, from j's centre to the contact point (0 for a wall)
+};
+
+/// A touching disc pair's contact and the pair's index in the neighbour list.
+struct TouchingDiscs {
+  DiscContact contact;
   int pair = 0;
 };
 
@@ -48,27 +59,46 @@ inline ContactGeometry reduceManifold(const Vec2& normal, const ManifoldPoints& 
   return g;
 }
 
-inline ContactGeometry collideDiscs(const Vec2& xa, double ra, const Vec2& xb, double rb) {
-  ContactGeometry g;
+inline DiscContact touchDiscs(const Vec2& xa, double ra, const Vec2& xb, double rb) {
+  DiscContact c;
   const Vec2 d = xb - xa;
   const double dist2 = d.squaredNorm();
   const double reach = ra + rb;
-  if (dist2 >= reach * reach || dist2 == 0.0) return g;
+  if (dist2 >= reach * reach || dist2 == 0.0) return c;
   const double dist = std::sqrt(dist2);
-  g.normal = d / dist;
-  g.overlap = reach - dist;
-  g.point = xa + g.normal * (ra - 0.5 * g.overlap);
+  c.normal = d / dist;
+  c.overlap = reach - dist;
+  c.armI = ra - 0.5 * c.overlap;
+  c.armJ = rb - 0.5 * c.overlap;
+  return c;
+}
+
+inline DiscContact touchDiscWall(const Vec2& x, double r, const Wall& wall) {
+  DiscContact c;
+  const double s = (x - wall.point).dot(wall.normal);
+  if (s >= r) return c;
+  c.normal = -wall.normal;
+  c.overlap = r - s;
+  c.armI = 0.5 * (r + s);
+  return c;
+}
+
+/// The full geometry of a disc contact: its point is `armI` along the normal from xa.
+inline ContactGeometry pointOf(const DiscContact& c, const Vec2& xa) {
+  ContactGeometry g;
+  if (c.overlap <= 0) return g;
+  g.normal = c.normal;
+  g.overlap = c.overlap;
+  g.point = xa + c.normal * c.armI;
   return g;
 }
 
+inline ContactGeometry collideDiscs(const Vec2& xa, double ra, const Vec2& xb, double rb) {
+  return pointOf(touchDiscs(xa, ra, xb, rb), xa);
+}
+
 inline ContactGeometry collideDiscWall(const Vec2& x, double r, const Wall& wall) {
-  ContactGeometry g;
-  const double s = (x - wall.point).dot(wall.normal);
-  if (s >= r) return g;
-  g.normal = -wall.normal;
-  g.overlap = r - s;
-  g.point = x - wall.normal * (0.5 * (r + s));
-  return g;
+  return pointOf(touchDiscWall(x, r, wall), x);
 }
 
 /// Polygon (body frame `poly`, centre x, rotation cos c and sin s) against a half-plane: the

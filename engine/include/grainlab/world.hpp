@@ -24,7 +24,8 @@ class RigidBodySolver;
 class WorkerPool;
 struct PairState;
 struct ContactGeometry;
-struct TouchingContact;
+struct DiscContact;
+struct TouchingDiscs;
 struct CachedContact;
 
 struct WorldSettings {
@@ -150,9 +151,12 @@ class World {
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
   template <bool kDiscsOnly, class Force, class Apart>
-  void forEachTouching(int begin, int end, TouchingContact* scratch, Force&& force, Apart&& apart);
+  void forEachTouching(int begin, int end, TouchingDiscs* scratch, Force&& force, Apart&& apart);
   template <class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
+                    double& torqueI, double& torqueJ) const;
+  template <class Law>
+  void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
 
   Material material_;
@@ -197,7 +201,7 @@ class World {
   std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
   std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
   std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
-  std::vector<TouchingContact> touching_;  // discs only: scratch for the two-pass force loop
+  std::vector<TouchingDiscs> touching_;  // discs only: scratch for the two-pass force loop
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
   Profile profile_;
