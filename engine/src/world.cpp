@@ -289,6 +289,19 @@ ContactGeometry World::pairGeometry(const PairState& p, CachedContact* cache) co
   return g;
 }
 
+namespace {
+// The law at a touching pair whose relative motion is m, with unit normal n and tangent t:
+// the force on j from i. Records the pair's history and last forces. Both contact forms
+// below end here.
+template <class Law>
+inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt) {
+  p.fn = law.normal.force(m, p.dampN);
+  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history);
+  p.overlap = m.overlap;
+  return p.fn * n + p.ft * t;
+}
+}  // namespace
+
 // The force of a touching pair with geometry g: F on j from i (−F on i), and the torques it
 // exerts about each centroid. Updates the pair's history and last forces.
 template <class Law>
@@ -307,15 +320,9 @@ inline void World::contactForce(PairState& p, const ContactGeometry& g, const La
     rj = g.point - x[j];
     dv += v[j] + cross(w[j], rj);
   }
-  const ContactMotion motion{g.overlap, dv.dot(n), dv.dot(t)};
-  const double fn = law.normal.force(motion, p.dampN);
-  const double ft = law.tangential.force(fn, motion, p.dampT, dt, p.history);
-  F = fn * n + ft * t;
+  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt);
   ti = cross(ri, F);
   tj = cross(rj, F);
-  p.fn = fn;
-  p.ft = ft;
-  p.overlap = g.overlap;
 }
 
 // The same force for a disc contact, with the lever vectors folded in: r_i = armI·n and
@@ -337,15 +344,9 @@ inline void World::contactForce(PairState& p, const DiscContact& c, const Law& l
     dv += v[j];
     spin += w[j] * c.armJ;
   }
-  const ContactMotion motion{c.overlap, dv.dot(n), dv.dot(t) - spin};
-  const double fn = law.normal.force(motion, p.dampN);
-  const double ft = law.tangential.force(fn, motion, p.dampT, dt, p.history);
-  F = fn * n + ft * t;
-  ti = c.armI * ft;
-  tj = -c.armJ * ft;
-  p.fn = fn;
-  p.ft = ft;
-  p.overlap = c.overlap;
+  F = lawForce(p, ContactMotion{c.overlap, dv.dot(n), dv.dot(t) - spin}, n, t, law, dt);
+  ti = c.armI * p.ft;
+  tj = -c.armJ * p.ft;
 }
 
 namespace {
