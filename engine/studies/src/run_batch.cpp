@@ -1,0 +1,152 @@
+#include "grainlab/studies/run_batch.hpp"
+
+#include <atomic>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "batch_execution.hpp"
+#include "grainlab/output_writer.hpp"
+#include "grainlab/scene.hpp"
+#include "grainlab/studies/cluster.hpp"
+
+namespace grainlab::studies {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Passes every event on to the run's own observer and tells the progress line how far it is.
+class ProgressRelay : public RunObserver {
+ public:
+  ProgressRelay(RunObserver& inner, BatchProgress& progress, const std::string& id)
+      : inner_(inner), progress_(progress), id_(id) {}
+  void onStart(const Scene& s, const World& w) override { inner_.onStart(s, w); }
+  void onSample(const Sample& s, const World& w) override { inner_.onSample(s, w); }
+  void onProgress(double fraction, std::string_view stage, const World& w) override {
+    inner_.onProgress(fraction, stage, w);
+    progress_.advanced(id_, fraction);
+  }
+  bool cancelRequested() override { return inner_.cancelRequested(); }
+  void onFinish(const RunSummary& s, const World& w) override { inner_.onFinish(s, w); }
+
+ private:
+  RunObserver& inner_;
+  BatchProgress& progress_;
+  const std::string& id_;
+};
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// For a run that ended before its observer wrote a summary (its world could not be built, or
+// its directory could not be written): the same file, saying why.
+void writeFailureSummary(const fs::path& dir, const BatchRunResult& result) {
+  const nlohmann::json summary{{"status", result.status}, {"error", result.error}, {"wall_seconds", result.wallSeconds}};
+  writeText(dir / "summary.json", summary.dump(2) + "\n");
+}
+
+void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pending, const BatchOptions& options,
+                BatchProgress& progress, std::vector<BatchRunResult>& results) {
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const size_t threads = std::min<size_t>(options.jobs == 0 ? hardware : options.jobs, pending.size());
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t k = next++; k < pending.size(); k = next++) {
+      results[pending[k]] = executeRun(runs[pending[k]], options.observer, progress);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();  // this thread works too
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
+
+BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, BatchProgress& progress) {
+  const fs::path work = run.dir.parent_path() / ("." + run.dir.filename().string() + ".partial");
+  progress.started(run.id);
+  BatchRunResult result;
+  try {
+    fs::remove_all(work);  // what an interrupted attempt left
+    fs::create_directories(work);
+    writeText(work / kSceneFile, run.scene.dump(2) + "\n");
+    const Scene scene = parseScene(run.scene);
+    std::unique_ptr<RunObserver> observer =
+        factory ? factory(run, work) : std::make_unique<OutputWriter>(work.string(), nullptr);
+    ProgressRelay relay(*observer, progress, run.id);
+    const RunSummary summary = runScene(scene, relay);
+    result.status = summary.status;
+    result.error = summary.error;
+    result.wallSeconds = summary.wallSeconds;
+    if (!fs::exists(work / "summary.json")) writeFailureSummary(work, result);
+  } catch (const std::exception& e) {
+    result.status = "failed";
+    result.error = e.what();
+    try {
+      writeFailureSummary(work, result);
+    } catch (const std::exception&) {
+      // Nothing more can be recorded; without a summary the run counts as not finished.
+    }
+  }
+  try {
+    fs::remove_all(run.dir);  // an earlier failed attempt
+    fs::rename(work, run.dir);
+  } catch (const std::exception& e) {
+    result.status = "failed";
+    result.error = "cannot move the run into " + run.dir.string() + ": " + e.what();
+  }
+  progress.finished(run.id, result.status, result.wallSeconds);
+  return result;
+}
+
+std::optional<BatchRunResult> finishedRun(const fs::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return std::nullopt;
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(in);
+    BatchRunResult result;
+    result.status = summary.at("status").get<std::string>();
+    result.error = summary.value("error", std::string());
+    result.wallSeconds = summary.value("wall_seconds", 0.0);
+    return result;
+  } catch (const std::exception&) {
+    return std::nullopt;  // not a summary this code wrote: not a finished run
+  }
+}
+
+std::vector<BatchRunResult> runBatch(const std::vector<BatchRun>& runs, const BatchOptions& options,
+                                     const Cluster& cluster) {
+  std::vector<BatchRunResult> results(runs.size());
+  if (!cluster.isRoot()) {
+#ifdef GRAINLAB_HAS_MPI
+    BatchProgress quiet(nullptr, options.label, 0, 0);
+    runDistributed(runs, {}, options, quiet, results, cluster);
+#endif
+    return {};
+  }
+  std::vector<size_t> pending;
+  for (size_t k = 0; k < runs.size(); ++k) {
+    const std::optional<BatchRunResult> earlier = finishedRun(runs[k].dir);
+    if (earlier && earlier->status == "completed") {
+      results[k] = *earlier;
+      results[k].reused = true;
+    } else {
+      pending.push_back(k);
+    }
+  }
+  BatchProgress progress(options.progress, options.label, pending.size(), runs.size() - pending.size());
+#ifdef GRAINLAB_HAS_MPI
+  if (cluster.size() > 1) {
+    runDistributed(runs, pending, options, progress, results, cluster);
+    return results;
+  }
+#endif
+  runLocally(runs, pending, options, progress, results);
+  return results;
+}
+
+}  // namespace grainlab::studies

@@ -1,0 +1,126 @@
+// Batches: each run's directory holds exactly what `grainlab run` writes, a finished
+// directory is never half-written, and running a batch again reruns only what did not
+// complete.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "grainlab/output_writer.hpp"
+#include "grainlab/scene.hpp"
+#include "grainlab/studies/cluster.hpp"
+#include "grainlab/studies/run_batch.hpp"
+
+namespace grainlab::studies {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Two discs meeting head on, for a few hundred steps: each run a different approach speed.
+nlohmann::json collision(double speed) {
+  return {{"name", "pair"},
+          {"particles",
+           {{{"shape", "disc"}, {"radius", 0.002}, {"position", {0, 0}}, {"velocity", {speed, 0}}},
+            {{"shape", "disc"}, {"radius", 0.002}, {"position", {0.0041, 0}}, {"velocity", {-speed, 0}}}}},
+          {"stages", {{{"type", "free"}, {"duration", 0.0005}}}},
+          {"output", {{"sample_interval", 0.0001}}}};
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class RunBatchTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("grainlab-batch-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    for (int k = 0; k < 4; ++k) runs_.push_back({"run" + std::to_string(k), dir_ / ("run" + std::to_string(k)), collision(0.05 * (k + 1))});
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::vector<BatchRunResult> run(BatchOptions options = {}) { return runBatch(runs_, options, cluster_); }
+
+  fs::path dir_;
+  std::vector<BatchRun> runs_;
+  Cluster cluster_;  // no MPI launcher here: a world of one
+};
+
+TEST_F(RunBatchTest, EachRunWritesWhatGrainlabRunWrites) {
+  BatchOptions options;
+  options.jobs = 2;
+  const std::vector<BatchRunResult> results = run(options);
+  ASSERT_EQ(results.size(), runs_.size());
+  for (size_t k = 0; k < runs_.size(); ++k) {
+    EXPECT_EQ(results[k].status, "completed") << results[k].error;
+    EXPECT_FALSE(results[k].reused);
+    // The same scene run directly, as `grainlab run scene.json` does.
+    const fs::path direct = dir_ / ("direct" + std::to_string(k));
+    OutputWriter writer(direct.string(), nullptr);
+    runScene(loadSceneFile((runs_[k].dir / kSceneFile).string()), writer);
+    for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"}) {
+      const std::string batch = slurp(runs_[k].dir / file);
+      EXPECT_FALSE(batch.empty()) << file;
+      EXPECT_EQ(batch, slurp(direct / file)) << runs_[k].id << " " << file;
+    }
+    EXPECT_EQ(nlohmann::json::parse(slurp(runs_[k].dir / kSceneFile)), runs_[k].scene);
+  }
+  // No partial directory is left behind.
+  for (const auto& entry : fs::directory_iterator(dir_)) EXPECT_EQ(entry.path().extension(), "") << entry.path();
+}
+
+TEST_F(RunBatchTest, RunningAgainRerunsExactlyWhatIsMissing) {
+  run();
+  const auto kept = fs::last_write_time(runs_[0].dir / "series.csv");
+  fs::remove_all(runs_[2].dir);
+  const std::vector<BatchRunResult> again = run();
+  for (size_t k = 0; k < runs_.size(); ++k) {
+    EXPECT_EQ(again[k].status, "completed");
+    EXPECT_EQ(again[k].reused, k != 2) << k;
+  }
+  EXPECT_EQ(fs::last_write_time(runs_[0].dir / "series.csv"), kept);  // not rewritten
+  EXPECT_TRUE(fs::exists(runs_[2].dir / "series.csv"));
+}
+
+TEST_F(RunBatchTest, AFailedRunIsRecordedAndRerunLater) {
+  BatchOptions options;
+  options.observer = [](const BatchRun& r, const fs::path& work) -> std::unique_ptr<RunObserver> {
+    if (r.id == "run1") throw std::runtime_error("disk full (simulated)");
+    return std::make_unique<OutputWriter>(work.string(), nullptr);
+  };
+  const std::vector<BatchRunResult> results = run(options);
+  EXPECT_EQ(results[1].status, "failed");
+  EXPECT_NE(results[1].error.find("disk full"), std::string::npos);
+  for (size_t k : {0u, 2u, 3u}) EXPECT_EQ(results[k].status, "completed") << k;
+  const std::optional<BatchRunResult> recorded = finishedRun(runs_[1].dir);
+  ASSERT_TRUE(recorded);
+  EXPECT_EQ(recorded->status, "failed");
+  EXPECT_EQ(recorded->error, results[1].error);
+
+  const std::vector<BatchRunResult> again = run();  // the fault is gone
+  EXPECT_EQ(again[1].status, "completed");
+  EXPECT_FALSE(again[1].reused);
+  EXPECT_TRUE(again[0].reused);
+}
+
+TEST_F(RunBatchTest, APartialOrUnreadableDirectoryIsNotAFinishedRun) {
+  run();
+  // An interrupted attempt: its partial directory may even hold a summary; it does not count.
+  fs::rename(runs_[0].dir, dir_ / ".run0.partial");
+  std::ofstream(runs_[3].dir / "summary.json", std::ios::trunc) << "{\"stat";  // torn by hand
+  EXPECT_FALSE(finishedRun(runs_[0].dir));
+  EXPECT_FALSE(finishedRun(runs_[3].dir));
+  const std::vector<BatchRunResult> again = run();
+  EXPECT_FALSE(again[0].reused);
+  EXPECT_FALSE(again[3].reused);
+  EXPECT_TRUE(again[1].reused);
+  EXPECT_FALSE(fs::exists(dir_ / ".run0.partial"));
+  EXPECT_EQ(finishedRun(runs_[3].dir)->status, "completed");
+}
+
+}  // namespace
+}  // namespace grainlab::studies
