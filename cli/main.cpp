@@ -12,8 +12,10 @@
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
 #include "paper_command.hpp"
+#include "sweep_command.hpp"
 #include "tradeoff_command.hpp"
 #ifdef GRAINLAB_HAS_SERVER
+#include "grainlab/server/import.hpp"
 #include "grainlab/server/serve.hpp"
 #endif
 
@@ -29,11 +31,13 @@ int usage(std::ostream& out, int code) {
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
          "                               speed on settled piles of discs and polygons\n"
          "  paper --out DIR [--quick] [--jobs N] [--report-only]  the paper's six tests, report.html\n"
+         "  sweep SPEC.json --out DIR [--jobs N]  every run of a parameter sweep (also under mpirun)\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
          "                               the HTTP/WebSocket server and dashboard\n"
+         "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif
          "  help                         this text\n";
   return code;
@@ -89,6 +93,33 @@ int serveCommand(const std::vector<std::string>& args) {
   }
   return grainlab::server::serve(options);
 }
+
+int importCommand(const std::vector<std::string>& args) {
+  std::string dir, db = grainlab::server::ServeOptions().db;
+  for (size_t k = 0; k < args.size(); ++k) {
+    if (args[k] == "--db" && k + 1 < args.size()) db = args[++k];
+    else if (!args[k].empty() && args[k][0] != '-' && dir.empty()) dir = args[k];
+    else {
+      std::cerr << "grainlab import: unexpected argument " << args[k] << "\n";
+      return usage(std::cerr, 2);
+    }
+  }
+  if (dir.empty()) {
+    std::cerr << "grainlab import: give the sweep folder (grainlab sweep's --out DIR)\n";
+    return 2;
+  }
+  try {
+    const grainlab::server::ImportReport r = grainlab::server::importSweepFolder(dir, db);
+    std::cout << "imported " << r.imported << " runs into " << db;
+    if (r.alreadyThere) std::cout << "; " << r.alreadyThere << " were there already";
+    if (r.notFinished) std::cout << "; " << r.notFinished << " have not run yet (run the sweep again to finish them)";
+    std::cout << "\n";
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+}
 #endif
 
 }  // namespace
@@ -111,8 +142,10 @@ int main(int argc, char** argv) {
     if (command == "bench") return grainlab::benchCommand(args);
     if (command == "paper") return grainlab::paperCommand(args);
     if (command == "tradeoff") return grainlab::tradeoffCommand(args);
+    if (command == "sweep") return grainlab::sweepCommand(args);
 #ifdef GRAINLAB_HAS_SERVER
     if (command == "serve") return serveCommand(args);
+    if (command == "import") return importCommand(args);
 #endif
     if (command == "help" || command == "--help" || command == "-h") return usage(std::cout, 0);
   } catch (const grainlab::SceneError& e) {

@@ -206,7 +206,7 @@ struct Repository::Writer {
   std::vector<std::function<void()>> afterCommit;
 };
 
-Repository::Repository(const std::string& path) : path_(path) {
+Repository::Repository(const std::string& path, Opener opener) : path_(path) {
   const auto parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
 
@@ -231,7 +231,7 @@ Repository::Repository(const std::string& path) : path_(path) {
       throw;
     }
   }
-  {
+  if (opener == Opener::Server) {
     auto use = writer_->statement(sql::kInterruptUnfinished).use();
     use.run();
   }

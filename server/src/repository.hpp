@@ -36,9 +36,13 @@ struct RunEnd {
 
 class Repository {
  public:
-  /// Opens or creates the file (and its parent directory), applies the migrations and marks
-  /// every run that was queued or running as interrupted: no process is running it now.
-  explicit Repository(const std::string& path);
+  /// Who opens the database: the server owns its runs; a tool beside it (grainlab import)
+  /// must not touch runs a live server may be running.
+  enum class Opener { Server, Tool };
+  /// Opens or creates the file (and its parent directory) and applies the migrations. The
+  /// server also marks every run that was queued or running as interrupted: no process is
+  /// running it now.
+  explicit Repository(const std::string& path, Opener opener = Opener::Server);
   /// Commits what is queued, then closes.
   ~Repository();
   Repository(const Repository&) = delete;

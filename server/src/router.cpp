@@ -158,6 +158,10 @@ ApiResponse Router::route(const ApiRequest& request) {
       throw ApiError(404, "no preset '" + std::string(seg[2]) + "'", "preset");
     }
   }
+  if (seg.size() == 3 && seg[1] == "sweeps" && seg[2] == "import") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    return jsonResponse(200, service_.importSweep(request.body));
+  }
   if (seg.size() < 2 || seg[1] != "runs") return noRoute();
 
   if (seg.size() == 2) {

@@ -1,4 +1,5 @@
 #include "run_service.hpp"
+#include "sweep_import.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -489,6 +490,28 @@ void RunService::shutdown() {
   }
   // Every finish callback refers to this object: let them all run before it goes.
   repo_.flush().get();
+}
+
+}  // namespace grainlab::server
+
+namespace grainlab::server {
+
+nlohmann::json RunService::importSweep(const std::string& body) {
+  nlohmann::json request;
+  try {
+    request = nlohmann::json::parse(body);
+  } catch (const nlohmann::json::exception& e) {
+    throw ApiError(400, std::string("not valid JSON: ") + e.what(), "(json)");
+  }
+  if (!request.is_object() || !request.contains("dir") || !request["dir"].is_string())
+    throw ApiError(400, "give the sweep folder's path on the server's machine as a string", "dir");
+  try {
+    const SweepImport outcome = server::importSweep(repo_, request["dir"].get<std::string>());
+    return {{"imported", outcome.ids.size()}, {"ids", outcome.ids}, {"already_there", outcome.alreadyThere},
+            {"not_finished", outcome.notFinished}};
+  } catch (const std::invalid_argument& e) {
+    throw ApiError(400, e.what(), "dir");
+  }
 }
 
 }  // namespace grainlab::server

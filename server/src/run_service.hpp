@@ -55,6 +55,9 @@ class RunService {
   /// followed by finish(). False for an unknown id.
   bool watch(std::int64_t id, const std::shared_ptr<StreamSink>& sink);
   nlohmann::json health();
+  /// {"dir": PATH}: a `grainlab sweep` folder on this machine into the database (400 if it is
+  /// not one); returns {"imported", "ids", "already_there", "not_finished"}.
+  nlohmann::json importSweep(const std::string& body);
   /// Stops every run (they end `interrupted`), waits for the workers and the database.
   void shutdown();
 

@@ -1,0 +1,149 @@
+#include "sweep_import.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "grainlab/run.hpp"
+#include "grainlab/server/import.hpp"
+#include "repository.hpp"
+#include "run_service.hpp"
+
+namespace grainlab::server {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json readJson(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::invalid_argument("cannot read " + file.string());
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(file.string() + " is not valid JSON: " + e.what());
+  }
+}
+
+std::vector<std::string> splitCells(const std::string& line) {
+  std::vector<std::string> cells;  // series.csv never quotes: its only text cells are stage names
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+// series.csv back into sample rows, column by column name (an empty cell is "not measured").
+std::vector<SampleRecord> readSeries(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  if (!in || !std::getline(in, line)) return {};
+  const std::vector<std::string> header = splitCells(line);
+  std::vector<long> slot(header.size(), -1);  // header column -> seriesColumns() index
+  for (size_t c = 0; c < header.size(); ++c) {
+    for (size_t k = 0; k < seriesColumns().size(); ++k) {
+      if (seriesColumns()[k] == header[c]) slot[c] = static_cast<long>(k);
+    }
+  }
+  std::vector<SampleRecord> samples;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = splitCells(line);
+    SampleRecord s;
+    s.seq = static_cast<std::int64_t>(samples.size());
+    s.values.assign(seriesColumns().size(), NAN);
+    for (size_t c = 0; c < cells.size() && c < header.size(); ++c) {
+      if (slot[c] < 0) continue;
+      if (header[c] == "stage") {
+        s.stage = cells[c];
+      } else if (!cells[c].empty()) {
+        s.values[static_cast<size_t>(slot[c])] = std::strtod(cells[c].c_str(), nullptr);
+      }
+    }
+    s.step = static_cast<std::int64_t>(s.values[seriesColumnIndex("step")]);
+    s.time = s.values[seriesColumnIndex("time")];
+    samples.push_back(std::move(s));
+  }
+  return samples;
+}
+
+}  // namespace
+
+SweepImport importSweep(Repository& repo, const fs::path& dir) {
+  const fs::path sweepFile = dir / "sweep.json";
+  if (!fs::is_regular_file(sweepFile))
+    throw std::invalid_argument(dir.string() + " is not a sweep folder (it has no sweep.json)");
+  const nlohmann::json sweep = readJson(sweepFile);
+  if (!sweep.contains("runs") || !sweep["runs"].is_array())
+    throw std::invalid_argument(sweepFile.string() + " lists no runs");
+  const nlohmann::json& spec = sweep.value("spec", nlohmann::json::object());
+  const std::string sweepName =
+      spec.contains("name") && spec["name"].is_string() ? spec["name"].get<std::string>()
+                                                        : fs::absolute(dir).lexically_normal().filename().string();
+  const std::string preset = spec.contains("base") && spec["base"].contains("preset") && spec["base"]["preset"].is_string()
+                                 ? spec["base"]["preset"].get<std::string>()
+                                 : std::string();
+
+  // What is there already, by name, so importing twice adds nothing.
+  std::multimap<std::string, std::int64_t> existing;
+  for (const RunRecord& r : repo.listRuns()) existing.emplace(r.name, r.id);
+
+  SweepImport outcome;
+  for (const nlohmann::json& entry : sweep["runs"]) {
+    const std::string id = entry.at("id").get<std::string>();
+    const fs::path runDir = dir / "runs" / id;
+    if (!fs::is_regular_file(runDir / "summary.json") || !fs::is_regular_file(runDir / "scene.json")) {
+      ++outcome.notFinished;
+      continue;
+    }
+    const nlohmann::json summary = readJson(runDir / "summary.json");
+    const std::string scene = readJson(runDir / "scene.json").dump();
+    RunRecord record;
+    record.name = sweepName + "/" + id;
+    bool seen = false;
+    for (auto [it, end] = existing.equal_range(record.name); it != end && !seen; ++it) {
+      const std::optional<RunRecord> stored = repo.findRun(it->second);
+      seen = stored && stored->scene == scene;
+    }
+    if (seen) {
+      ++outcome.alreadyThere;
+      continue;
+    }
+    record.preset = preset;
+    record.scene = scene;
+    record.status = status::kQueued;  // until finishRun below, in the same queue of writes
+    record.particles = summary.value("particles", 0);
+    record.createdAt = unixNow();
+    const std::int64_t runId = repo.insertRun(record).get();
+    repo.markStarted(runId, record.createdAt);
+    const std::vector<SampleRecord> samples = readSeries(runDir / "series.csv");
+    for (const SampleRecord& s : samples) repo.appendSample(runId, s);
+    RunEnd end;
+    end.status = summary.value("status", std::string(status::kFailed));
+    if (end.status != status::kCompleted && end.status != status::kCancelled) end.status = status::kFailed;
+    end.error = summary.value("error", std::string());
+    end.stage = samples.empty() ? std::string() : samples.back().stage;
+    end.finishedAt = record.createdAt;
+    if (summary.contains("wall_seconds")) end.wallSeconds = summary["wall_seconds"].get<double>();
+    end.steps = summary.value("steps", std::int64_t{0});
+    end.particles = record.particles;
+    if (summary.contains("peak_phi_mob_deg")) end.peakPhiMobDeg = summary["peak_phi_mob_deg"].get<double>();
+    repo.finishRun(runId, end, [] {});
+    outcome.ids.push_back(runId);
+  }
+  repo.flush().get();
+  return outcome;
+}
+
+ImportReport importSweepFolder(const std::string& dir, const std::string& db) {
+  Repository repo(db, Repository::Opener::Tool);  // a server may be running on the same file
+  const SweepImport outcome = importSweep(repo, dir);
+  return {static_cast<int>(outcome.ids.size()), outcome.alreadyThere, outcome.notFinished};
+}
+
+}  // namespace grainlab::server
