@@ -86,6 +86,15 @@ TEST_F(RunBatchTest, RunningAgainRerunsExactlyWhatIsMissing) {
   EXPECT_TRUE(fs::exists(runs_[2].dir / "series.csv"));
 }
 
+TEST_F(RunBatchTest, ARunWhoseSceneChangedIsRunAgain) {
+  run();
+  runs_[1].scene["stages"][0]["duration"] = 0.0006;
+  const std::vector<BatchRunResult> again = run();
+  EXPECT_FALSE(again[1].reused);
+  EXPECT_TRUE(again[0].reused);
+  EXPECT_EQ(nlohmann::json::parse(slurp(runs_[1].dir / kSceneFile)), runs_[1].scene);
+}
+
 TEST_F(RunBatchTest, AFailedRunIsRecordedAndRerunLater) {
   BatchOptions options;
   options.observer = [](const BatchRun& r, const fs::path& work) -> std::unique_ptr<RunObserver> {

@@ -48,6 +48,17 @@ void writeFailureSummary(const fs::path& dir, const BatchRunResult& result) {
   writeText(dir / "summary.json", summary.dump(2) + "\n");
 }
 
+// The run's folder was written for this very scene (a changed preset or spec means a new run).
+bool sameScene(const fs::path& dir, const nlohmann::json& scene) {
+  std::ifstream in(dir / kSceneFile);
+  if (!in) return false;
+  try {
+    return nlohmann::json::parse(in) == scene;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pending, const BatchOptions& options,
                 BatchProgress& progress, std::vector<BatchRunResult>& results) {
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
@@ -131,7 +142,7 @@ std::vector<BatchRunResult> runBatch(const std::vector<BatchRun>& runs, const Ba
   std::vector<size_t> pending;
   for (size_t k = 0; k < runs.size(); ++k) {
     const std::optional<BatchRunResult> earlier = finishedRun(runs[k].dir);
-    if (earlier && earlier->status == "completed") {
+    if (earlier && earlier->status == "completed" && sameScene(runs[k].dir, runs[k].scene)) {
       results[k] = *earlier;
       results[k].reused = true;
     } else {

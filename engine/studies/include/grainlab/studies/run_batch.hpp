@@ -3,7 +3,8 @@
 // spread over MPI ranks with rank 0 handing them out one at a time (a slow run holds up
 // nothing else). A run works in a hidden ".<name>.partial" directory that is renamed into
 // place when it ends, so a directory under its own name always holds a finished run; a run
-// already completed there is skipped, so running the same batch again resumes it.
+// already completed there for the same scene is skipped, so running the same batch again
+// resumes it (and a run whose scene changed is run again).
 #include <filesystem>
 #include <functional>
 #include <memory>
