@@ -172,12 +172,12 @@ TEST(OmegaOnsetSign, PositiveAndDecayingHoldsNegativeDoesNot) {
   AssemblyResult a = syntheticRun(AssemblyKind::Bedding, 30);
   Finding f = findOmegaOnsetSign(one(a));
   EXPECT_EQ(f.verdict, Verdict::Holds) << f.checks.at(0).measured;
-  // ω at 0.2 %: 8·exp(−0.002/0.05) = 7.69°, read between the samples at 0 and 0.25 %.
-  EXPECT_NEAR(f.checks.at(0).value, 8 * std::exp(-0.002 / 0.05), 0.05);
+  // The onset is the first sample at or beyond 0.2 % with φ_mob ≥ 5°: ε22 = 0.25 %, ω = 8·exp(−0.0025/0.05).
+  EXPECT_NEAR(f.checks.at(0).value, 8 * std::exp(-0.0025 / 0.05), 1e-9);
   // The pushes a_k sin 2(θ_k − 90°) are reported but do not judge the claim.
   int diagnostics = 0;
   for (const Check& c : f.checks) diagnostics += c.diagnostic;
-  EXPECT_EQ(diagnostics, 7);
+  EXPECT_EQ(diagnostics, 13);  // ω by Eqs. 7 and 11, five pushes at ε22 = 0 and at the onset, θ_n(0)
   setColumn(a, "omega_macro_deg", [](double e) { return -6 * std::exp(-e / 0.05); });
   f = findOmegaOnsetSign(one(a));
   EXPECT_EQ(f.checks.at(0).verdict, Verdict::DoesNotHold);

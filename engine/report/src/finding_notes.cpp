@@ -108,13 +108,14 @@ std::string reasons(const Finding& finding, const RunFacts& facts) {
              "interpretation and six-vertex polygons also set how densely the particles pack. " +
              sizeSentence(facts);
     case 8:
-      return "ω takes the sign of the sum of the pushes a_k sin 2(θ_k − 90°) over the five terms (Eq. 7); the rows "
-             "marked 'measured' give each at the onset, and θ_c, θ_n where the shearing starts. The angle "
-             "conventions are not the cause: tests/analysis/stress_sign_convention_test.cpp shows that grainlab "
-             "gives ω > 0 for a fabric at 90° + α compressed along the 2-axis from a stress-free state. After "
-             "isotropic consolidation the stress is isotropic, so the force terms must cancel the fabric's (ΣA_k ≈ "
-             "0, θ_n near θ_c − 90°) before shearing starts; where the normal-force push outweighs the fabric's at "
-             "the onset, ω starts negative. " + sizeSentence(facts);
+      return "ω has the sign of the sum of the pushes a_k sin 2(θ_k − 90°) over the five terms (Eq. 7); the rows "
+             "marked 'measured' give each at ε22 = 0 and at the onset, and ω by Eq. (7) and by Eq. (11), which drops "
+             "the branch-vector terms ln and lt. The fabric A_c pushes θσ toward θ_c ≈ 90° + α; the branch-vector "
+             "terms, whose directions lie near α for bedded elongated particles, push it the other way. Where they "
+             "outweigh the fabric, ω starts negative, while Eq. (11) (the fabric and force terms alone) gives the "
+             "positive ω of the natural reading. The angle conventions are not the cause: "
+             "tests/analysis/stress_sign_convention_test.cpp shows grainlab gives ω > 0 for a disc fabric at 90° + α "
+             "compressed along the 2-axis. " + sizeSentence(facts);
     default: return "";
   }
 }
