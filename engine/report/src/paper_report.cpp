@@ -106,7 +106,12 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
   context.command = options.command;
   context.quick = options.quick;
   context.concurrentRuns = concurrent;
-  context.seeds = options.reportOnly ? 0 : options.seeds;
+  // Seeds per assembly as found (the --report-only case included).
+  context.seeds = 0;
+  for (const std::string& preset : presets) {
+    context.seeds = std::max<int>(context.seeds, static_cast<int>(std::count_if(
+        outcome.runs.begin(), outcome.runs.end(), [&](const AssemblyResult& a) { return a.preset == preset; })));
+  }
   context.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.findings = writePaperReport(options.outDir, outcome.runs, context);
   outcome.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,7 +15,7 @@ struct ReportContext {
   std::string command;        ///< the command line that made the report
   bool quick = false;         ///< the -quick presets
   unsigned concurrentRuns = 1;  ///< 0: the report was rebuilt from runs already on disk
-  int seeds = 1;              ///< seeds asked for per assembly (0 when rebuilt from disk)
+  int seeds = 1;              ///< runs (seeds) per assembly
   double wallSeconds = 0;     ///< s, all runs and the report
 };
 
