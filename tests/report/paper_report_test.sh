@@ -11,6 +11,11 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
+# Bad --seeds: a clear error naming the option, and nothing run.
+if "$grainlab" paper --quick --seeds 0 --out "$tmp/bad" 2> "$tmp/bad.txt"; then fail "--seeds 0 was accepted"; fi
+grep -q -- '--seeds takes a positive whole number' "$tmp/bad.txt" || fail "--seeds 0: no clear error ($(cat "$tmp/bad.txt"))"
+[[ ! -e "$tmp/bad" ]] || fail "--seeds 0 wrote into its output directory"
+
 "$grainlab" paper --quick --seeds 2 --out "$tmp/out" 2> "$tmp/progress.txt" || { tail -20 "$tmp/progress.txt" >&2; fail "paper exited non-zero"; }
 grep -q 'completed in' "$tmp/progress.txt" || fail "no progress on stderr"
 [[ -s "$tmp/out/report.html" ]] || fail "no report.html"
