@@ -127,11 +127,12 @@ void addEnsembleRows(CsvTable& t, const Ensemble& e, bool bedding, const std::ve
   }
 }
 
-// The ensemble on a chart: each seed's run thin and pale, then the mean with its 95 % band.
+// The ensemble on a chart: each seed's run thin and pale, then the mean with its 95 % band
+// (`spread` false: the mean alone).
 void drawBand(ChartSpec& chart, const std::string& label, const std::string& colour, const EnsembleBand& b,
-              double yFactor = 1, bool dashed = false, bool markers = false, bool withRuns = true) {
+              double yFactor = 1, bool dashed = false, bool markers = false, bool spread = true) {
   const auto x = percent(b.strain);
-  if (withRuns && b.perRun.size() > 1) {
+  if (spread && b.perRun.size() > 1) {
     for (const auto& run : b.perRun) {
       LineSeries faint{"", x, scaled(run, yFactor), colour, false, false};
       faint.faint = true;
@@ -139,8 +140,10 @@ void drawBand(ChartSpec& chart, const std::string& label, const std::string& col
     }
   }
   LineSeries mean{label, x, scaled(b.mean(), yFactor), colour, dashed, markers};
-  mean.low = scaled(b.low(), yFactor);
-  mean.high = scaled(b.high(), yFactor);
+  if (spread) {
+    mean.low = scaled(b.low(), yFactor);
+    mean.high = scaled(b.high(), yFactor);
+  }
   chart.series.push_back(std::move(mean));
 }
 
@@ -343,12 +346,11 @@ Figure omegaVersusStrain(const std::vector<Ensemble>& all) {
     const char letter = static_cast<char>('a' + index++);
     ChartSpec chart = strainChart("fig15" + std::string(1, letter), "(" + std::string(1, letter) + ") " + e->label(), "ω (°)");
     chart.yReferences = {0};
+    // Only the stress tensor's ω has its band and runs: four overlapping bands would hide each other.
     drawBand(chart, "stress", "#000000", bands[1], 1, false, true);
     drawBand(chart, "Eq. (7)", "#D55E00", bands[2], 1, false, false, false);
     drawBand(chart, "Eq. (10)", "#009E73", bands[3], 1, true, false, false);
     drawBand(chart, "Eq. (11)", "#0072B2", bands[4], 1, true, false, false);
-    // Only the stress tensor's ω keeps its band: four overlapping bands would hide each other.
-    for (size_t s = chart.series.size() - 3; s < chart.series.size(); ++s) chart.series[s].low.clear(), chart.series[s].high.clear();
     f.panels.push_back(strainPanel(chart));
   }
   return f;
