@@ -18,16 +18,19 @@ int paperCommand(const std::vector<std::string>& args) {
       options.quick = true;
     } else if (args[k] == "--report-only") {
       options.reportOnly = true;
-    } else if (args[k] == "--jobs" && hasValue) {
+    } else if ((args[k] == "--jobs" || args[k] == "--seeds") && hasValue) {
+      const std::string& name = args[k];
       const std::string& value = args[++k];
-      if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || std::stoul(value) == 0) {
-        std::cerr << "grainlab paper: --jobs takes a positive whole number, not \"" << value << "\"\n";
+      if (value.empty() || value.size() > 6 || value.find_first_not_of("0123456789") != std::string::npos ||
+          std::stoul(value) == 0) {
+        std::cerr << "grainlab paper: " << name << " takes a positive whole number, not \"" << value << "\"\n";
         return 2;
       }
-      options.jobs = static_cast<unsigned>(std::stoul(value));
+      if (name == "--jobs") options.jobs = static_cast<unsigned>(std::stoul(value));
+      else options.seeds = static_cast<int>(std::stoul(value));
     } else {
       std::cerr << "grainlab paper: unexpected argument " << args[k] << "\n"
-                << "usage: grainlab paper --out DIR [--quick] [--jobs N] [--report-only]\n";
+                << "usage: grainlab paper --out DIR [--quick] [--seeds N] [--jobs N] [--report-only]\n";
       return 2;
     }
   }
@@ -40,7 +43,7 @@ int paperCommand(const std::vector<std::string>& args) {
   for (const report::AssemblyResult& a : outcome.runs) {
     if (a.summary.status == "completed") continue;
     ++failed;
-    std::cerr << "error: " << a.preset << " " << a.summary.status << (a.summary.error.empty() ? "" : ": " + a.summary.error)
+    std::cerr << "error: " << a.preset << " seed " << a.seed << " " << a.summary.status << (a.summary.error.empty() ? "" : ": " + a.summary.error)
               << "\n";
   }
   return failed ? 1 : 0;

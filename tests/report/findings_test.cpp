@@ -84,7 +84,7 @@ TEST(StressSymmetry, SmallAsymmetryHoldsLargeDoesNot) {
 TEST(CircularFabric, ZeroBranchAnisotropyAndDirectionsTurningTo90Hold) {
   const Finding f = findCircularFabric(one(syntheticRun(AssemblyKind::Circular)));
   EXPECT_EQ(f.verdict, Verdict::Holds);
-  ASSERT_EQ(f.checks.size(), 3u);
+  ASSERT_EQ(f.checks.size(), 4u);  // branch vectors, coincidence, away from 90° at the start, turned to 90°
 }
 
 TEST(CircularFabric, NoisyStartIsInconclusiveNotFailed) {
@@ -168,11 +168,29 @@ TEST(VoidRatios, InsideThePapersRangeHoldsOutsideDoesNot) {
   EXPECT_DOUBLE_EQ(paperVoidRatio(bedded(60)), 0.272);
 }
 
+TEST(OmegaOnsetSign, PositiveAndDecayingHoldsNegativeDoesNot) {
+  AssemblyResult a = syntheticRun(AssemblyKind::Bedding, 30);
+  Finding f = findOmegaOnsetSign(one(a));
+  EXPECT_EQ(f.verdict, Verdict::Holds) << f.checks.at(0).measured;
+  // The onset is the first sample at or beyond 0.2 % with φ_mob ≥ 5°: ε22 = 0.25 %, ω = 8·exp(−0.0025/0.05).
+  EXPECT_NEAR(f.checks.at(0).value, 8 * std::exp(-0.0025 / 0.05), 1e-9);
+  // The pushes a_k sin 2(θ_k − 90°) are reported but do not judge the claim.
+  int diagnostics = 0;
+  for (const Check& c : f.checks) diagnostics += c.diagnostic;
+  EXPECT_EQ(diagnostics, 13);  // ω by Eqs. 7 and 11, five pushes at ε22 = 0 and at the onset, θ_n(0)
+  setColumn(a, "omega_macro_deg", [](double e) { return -6 * std::exp(-e / 0.05); });
+  f = findOmegaOnsetSign(one(a));
+  EXPECT_EQ(f.checks.at(0).verdict, Verdict::DoesNotHold);
+  EXPECT_EQ(f.verdict, Verdict::DoesNotHold);
+  // α = 0° and 90° have no tilt to have a sign: the claim is about 30° and 60° only.
+  EXPECT_EQ(findOmegaOnsetSign(one(syntheticRun(AssemblyKind::Bedding, 90))).verdict, Verdict::Inconclusive);
+}
+
 TEST(Findings, FailedOrMissingRunsMakeClaimsInconclusive) {
   AssemblyResult a = syntheticRun(AssemblyKind::Circular);
   a.summary.status = "failed";
   const auto all = evaluateFindings(one(a));
-  ASSERT_EQ(all.size(), 7u);
+  ASSERT_EQ(all.size(), 8u);
   for (const Finding& f : all) {
     EXPECT_EQ(f.verdict, Verdict::Inconclusive) << f.number;
     EXPECT_FALSE(f.note.empty());

@@ -1,16 +1,28 @@
 #!/usr/bin/env bash
-# `grainlab paper --quick`: the report's structure, not the paper's agreement. report.html
-# exists and loads nothing from the network, has the seven findings rows each with a verdict,
-# and every figure's CSV exists with a header and rows and no nan/inf cell.
+# `grainlab paper --quick --seeds 2`: the report's structure, not the paper's agreement.
+# report.html exists and loads nothing from the network, has the eight findings rows each with
+# a verdict; findings.csv has seeds, ci_low, ci_high; every figure's CSV exists with a header,
+# rows, mean and interval columns and no nan/inf cell; each seed's run has its own folder; and
+# --report-only rebuilds the same findings from the folders. Twelve quick runs: the CI's
+# longest test (about 2× the single-seed one it replaces).
 set -euo pipefail
 grainlab=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-"$grainlab" paper --quick --out "$tmp/out" 2> "$tmp/progress.txt" || { tail -20 "$tmp/progress.txt" >&2; fail "paper exited non-zero"; }
+# Bad --seeds: a clear error naming the option, and nothing run.
+if "$grainlab" paper --quick --seeds 0 --out "$tmp/bad" 2> "$tmp/bad.txt"; then fail "--seeds 0 was accepted"; fi
+grep -q -- '--seeds takes a positive whole number' "$tmp/bad.txt" || fail "--seeds 0: no clear error ($(cat "$tmp/bad.txt"))"
+[[ ! -e "$tmp/bad" ]] || fail "--seeds 0 wrote into its output directory"
+
+"$grainlab" paper --quick --seeds 2 --out "$tmp/out" 2> "$tmp/progress.txt" || { tail -20 "$tmp/progress.txt" >&2; fail "paper exited non-zero"; }
 grep -q 'completed in' "$tmp/progress.txt" || fail "no progress on stderr"
 [[ -s "$tmp/out/report.html" ]] || fail "no report.html"
+
+cp "$tmp/out/findings.csv" "$tmp/findings-run.csv"
+"$grainlab" paper --quick --out "$tmp/out" --report-only 2> "$tmp/rebuild.txt" || { cat "$tmp/rebuild.txt" >&2; fail "--report-only exited non-zero"; }
+cmp -s "$tmp/out/findings.csv" "$tmp/findings-run.csv" || fail "--report-only gives other findings than the run"
 
 python3 - "$tmp/out" <<'PY'
 import csv, math, os, re, sys
@@ -29,8 +41,8 @@ if re.search(r'url\(\s*["\']?\s*(?:https?:)?//', html, re.I):
 if "<svg" not in html:
     fail("report.html has no inline SVG")
 
-verdicts = {"holds", "does not hold", "inconclusive"}
-for n in range(1, 8):
+verdicts = {"holds", "does not hold", "inconclusive", "not resolved at 2 seeds"}
+for n in range(1, 9):
     m = re.search(r'<tr class="finding" id="finding-%d">(.*?)</tr>' % n, html, re.S)
     if not m:
         fail(f"finding {n} has no row")
@@ -56,10 +68,35 @@ for name in figures + ["runs", "findings"]:
     if name in figures and f'href="{name}.csv"' not in html:
         fail(f"report.html does not link {name}.csv")
 
+for name in figures[:-1]:
+    header = next(csv.reader(open(os.path.join(out, name + ".csv"), encoding="utf-8")))
+    for col in ("seeds",):
+        if col not in header:
+            fail(f"{name}.csv has no {col} column")
+    if not any(h.endswith("_mean") for h in header) or not any(h.endswith("_ci_low") for h in header):
+        fail(f"{name}.csv has no _mean/_ci_low columns")
+
+findings = list(csv.DictReader(open(os.path.join(out, "findings.csv"), encoding="utf-8")))
+for col in ("seeds", "ci_low", "ci_high", "verdict", "value"):
+    if col not in findings[0]:
+        fail(f"findings.csv has no {col} column")
+if sorted({int(r["number"]) for r in findings}) != list(range(1, 9)):
+    fail("findings.csv does not cover findings 1-8")
+judged = [r for r in findings if r["seeds"] == "2" and r["ci_low"] and r["ci_high"]]
+if not judged:
+    fail("no check in findings.csv was judged on two seeds with an interval")
+for r in judged:
+    if not float(r["ci_low"]) <= float(r["value"]) <= float(r["ci_high"]):
+        fail(f"finding {r['number']} {r['subject']}: mean {r['value']} outside its interval")
+
+runs = list(csv.DictReader(open(os.path.join(out, "runs.csv"), encoding="utf-8")))
+if len(runs) != 12:
+    fail(f"runs.csv has {len(runs)} runs, not 6 assemblies × 2 seeds")
 for preset in ["circular", "elongated-random"] + ["elongated-bedding-%d" % a for a in (0, 30, 60, 90)]:
-    run = os.path.join(out, "runs", preset + "-quick")
-    for f in ("series.csv", "summary.json", "particles_final.csv", "contacts_final.csv"):
-        if not os.path.isfile(os.path.join(run, f)):
-            fail(f"runs/{preset}-quick/{f} is missing")
+    for seed in (1, 2):
+        run = os.path.join(out, "runs", preset + "-quick", f"seed-{seed}")
+        for f in ("scene.json", "series.csv", "summary.json", "particles_final.csv", "contacts_final.csv", "roses.json"):
+            if not os.path.isfile(os.path.join(run, f)):
+                fail(f"runs/{preset}-quick/seed-{seed}/{f} is missing")
 print("paper report structure: ok")
 PY

@@ -106,5 +106,21 @@ TEST(RenderLineChart, GapsLegendAndNoNumbersThatAreNotNumbers) {
   EXPECT_EQ(occurrences(svg, "</svg>"), 1);
 }
 
+TEST(RenderLineChart, BandsBreakAtGapsAndWidenTheAxis) {
+  ChartSpec spec;
+  spec.id = "t3";
+  LineSeries mean{"mean", {0, 1, 2, 3, 4, 5}, {1, 1, 1, 1, 1, 1}, "#000000"};
+  mean.low = {0.5, 0.5, NAN, 0.5, 0.5, 0.5};
+  mean.high = {1.5, 1.5, NAN, 1.5, 1.5, 9.0};  // the band's top sets the axis, not the line
+  LineSeries faint{"", {0, 5}, {0.8, 0.8}, "#000000"};
+  faint.faint = true;
+  spec.series = {faint, mean};
+  const std::string svg = renderLineChart(spec);
+  EXPECT_EQ(occurrences(svg, "class=\"band\""), 2);  // split by the missing bounds at x = 2
+  EXPECT_EQ(occurrences(svg, "stroke-opacity=\"0.3\""), 1);
+  EXPECT_NE(svg.find(">10<"), std::string::npos) << "the y axis reaches the band's 9";
+  EXPECT_FALSE(std::regex_search(svg, std::regex("nan|inf", std::regex::icase)));
+}
+
 }  // namespace
 }  // namespace grainlab::report

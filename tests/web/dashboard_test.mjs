@@ -1,6 +1,7 @@
 // The dashboard in a real browser against the real server: start circular-quick from the New
 // run form, watch the particle view, charts and rose diagrams fill while it runs and after,
-// replay it with the strain slider, download its CSV, list and compare it, and get the API's
+// replay it with the strain slider, download its CSV, list and compare it (run by run and as an
+// ensemble's mean with its 95 % band), and get the API's
 // validation error beside the friction field for a negative friction. No console errors.
 import {
   canvasHash, canvasInk, check, finish, launchBrowser, screenshot, startServer, waitUntil, watchConsole,
@@ -234,6 +235,45 @@ try {
   const ticked = await page.$$eval('.compare-picker input:checked', (inputs) => inputs.map((i) => Number(i.dataset.runId)));
   check('the picker ticks the compared runs', ticked.length === 2 && ticked.includes(runId) && ticked.includes(secondId), ticked.join(','));
   await screenshot(page, '09-compare');
+
+  // ---- compare as an ensemble: the two runs' mean with its 95 % band ----
+  await page.check('#compare-ensemble');
+  const ensemble = await waitUntil(() => page.$$eval('.compare-grid .chart-panel',
+    (p) => p.length > 0 && p.every((e) => e.dataset.ensemble === '2' && Number(e.dataset.points) > 0)), 20);
+  check('ensemble mode draws every chart as the mean of the ticked runs', Boolean(ensemble));
+  const ensembleSeries = await page.$$eval('.compare-grid .chart-panel', (panels) =>
+    panels.map((p) => p.querySelectorAll('.u-legend .u-series').length - 1));
+  check('each ensemble chart has both runs faint, the band\'s two edges and the mean',
+    ensembleSeries.every((n) => n === 5), ensembleSeries.join(','));
+  check('ensemble mode is kept in the link', /mode=ensemble/.test(page.url()), page.url());
+  await screenshot(page, '10-compare-ensemble');
+  // The statistics themselves, in the browser: a t-interval by hand, none for one run, zero
+  // width for identical runs, axial means across the wrap.
+  const stats = await page.evaluate(async () => {
+    const m = await import('/js/ensemble_stats.js');
+    const three = m.meanInterval([1, 2, 3, null]);
+    const same = m.ensembleBand([[[0, 1, 2], [5, 6, 7]], [[0, 1, 2], [5, 6, 7]], [[0, 0.5, 2], [5, 5.5, 7]]]);
+    return {
+      half: three.high - three.mean,
+      one: m.meanInterval([4]).low,
+      sameWidth: Math.max(...same.high.map((hi, i) => hi - same.low[i])),
+      sameMean: same.mean,
+      axial: m.axialMeanInterval([178, 4]).mean,
+    };
+  });
+  check('the Compare view\'s interval is the t-interval (4.303/√3 for 1, 2, 3)', Math.abs(stats.half - 4.303 / Math.sqrt(3)) < 1e-9, String(stats.half));
+  check('one run has no interval', stats.one === null, String(stats.one));
+  check('identical runs (one sampled at other strains) give a zero-width band', stats.sameWidth < 1e-12
+    && stats.sameMean.every((v, i) => Math.abs(v - [5, 6, 7][i]) < 1e-12), `${stats.sameWidth} ${stats.sameMean}`);
+  check('directions average across the wrap (178°, 4° → 1°)', Math.abs(stats.axial - 1) < 1e-9, String(stats.axial));
+  // A direction below twice its noise floor is a gap, in the run and the Compare charts alike.
+  const masked = await page.evaluate(async () => {
+    const { direction } = await import('/js/chart_specs.js');
+    const columns = { theta_ln_deg: [10, 170, 95], a_ln: [0.001, 0.2, 0.01], contacts: [2500, 2500, 2500] };
+    return direction('ln')({ column: (name) => columns[name] ?? null }, [0, 1, 2]);
+  });
+  check('θ_ln is drawn only where a_ln ≥ 2 × 1.25·√(2/N_c) (0.071 at 2,500 contacts)',
+    masked[0] === null && masked[1] === 170 && masked[2] === null, JSON.stringify(masked));
 
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
   exitCode = finish();

@@ -16,8 +16,10 @@ const HEIGHT = 250;
 export class ChartPanel {
   /**
    * @param {HTMLElement} parent
-   * @param {{title: string, xLabel: string, series: {label, scale?, dash?, stroke?}[],
-   *          axes: {label, scale?, side?}[], spanGaps?: boolean}} spec
+   * @param {{title: string, xLabel: string, series: {label, scale?, dash?, stroke?, width?}[],
+   *          axes: {label, scale?, side?}[], spanGaps?: boolean,
+   *          bands?: {series: [number, number], fill: string}[]}} spec
+   *   bands: shade between two series (indices into spec.series, upper first), e.g. a 95 % interval.
    */
   constructor(parent, spec) {
     this.marker = null;
@@ -42,7 +44,7 @@ export class ChartPanel {
           label: s.label,
           scale: s.scale ?? 'y',
           stroke: s.stroke ?? SERIES_COLOURS[k % SERIES_COLOURS.length],
-          width: 1.5,
+          width: s.width ?? 1.5,
           dash: s.dash,
           spanGaps: spec.spanGaps ?? false,
           value: format,
@@ -60,6 +62,7 @@ export class ChartPanel {
           values: (_, ticks) => ticks.map((t) => sig(t, 3)),
         })),
       ],
+      bands: (spec.bands ?? []).map((b) => ({ series: [b.series[0] + 1, b.series[1] + 1], fill: b.fill })),
       cursor: { drag: { x: true, y: false } },
       hooks: { draw: [(u) => this.drawMarker(u)] },
     }, [[], ...spec.series.map(() => [])], this.body);

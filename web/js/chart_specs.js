@@ -17,6 +17,25 @@ const column = (name, factor = 1) => (table, rows) => {
   return rows.map((i) => (data[i] === null ? null : data[i] * factor));
 };
 
+/** The a_k an isotropic sample of N_c contacts shows by chance: 1.25·√(2/N_c) (docs/micromechanics.md). */
+export const noiseFloor = (contacts) => (contacts > 0 ? 1.25 * Math.sqrt(2 / contacts) : null);
+/** A direction θ_k means something only where a_k is at least this many noise floors (as the report). */
+export const DIRECTION_NOISE_FACTOR = 2;
+
+/**
+ * θ_k where a_k ≥ 2 × noise floor, null (a gap) elsewhere: where a_k is about zero its direction is
+ * chance and would jump by tens of degrees from sample to sample.
+ */
+export const direction = (term) => (table, rows) => {
+  const theta = table.column(`theta_${term}_deg`), coef = table.column(`a_${term}`), contacts = table.column('contacts');
+  if (!theta || !coef || !contacts) return rows.map(() => null);
+  return rows.map((i) => {
+    const floor = noiseFloor(contacts[i]);
+    if (theta[i] === null || coef[i] === null || floor === null) return null;
+    return coef[i] >= DIRECTION_NOISE_FACTOR * floor ? theta[i] : null;
+  });
+};
+
 /** σ12 − σ21 in kPa. */
 const stressAsymmetry = (table, rows) => {
   const s12 = table.column('sigma12'), s21 = table.column('sigma21');
@@ -60,13 +79,13 @@ export const RUN_CHARTS = [
   },
   {
     key: 'directions',
-    title: 'Principal directions of anisotropy',
+    title: 'Principal directions of anisotropy (drawn where a_k ≥ 2× noise floor)',
     series: [
-      { label: 'θ_c (°)', values: column('theta_c_deg') },
-      { label: 'θ_n (°)', values: column('theta_n_deg') },
-      { label: 'θ_t (°)', values: column('theta_t_deg') },
-      { label: 'θ_ln (°)', values: column('theta_ln_deg') },
-      { label: 'θ_lt (°)', values: column('theta_lt_deg') },
+      { label: 'θ_c (°)', values: direction('c') },
+      { label: 'θ_n (°)', values: direction('n') },
+      { label: 'θ_t (°)', values: direction('t') },
+      { label: 'θ_ln (°)', values: direction('ln') },
+      { label: 'θ_lt (°)', values: direction('lt') },
     ],
     axes: [{ label: 'θ_k (°)' }],
   },
@@ -89,7 +108,10 @@ export const RUN_CHARTS = [
   },
 ];
 
-/** The compare view: one quantity per chart, one line per run. */
+/**
+ * The compare view: one quantity per chart, one line per run. `gaps`: a missing value is a gap
+ * to keep (a direction below its noise floor), not a sample another run has and this one lacks.
+ */
 export const COMPARE_CHARTS = [
   { key: 'phi', title: 'φ_mob (°)', values: column('phi_mob_deg') },
   { key: 'deviator', title: 'σ1 − σ3 (kPa)', values: column('q', 2e-3) },
@@ -97,15 +119,15 @@ export const COMPARE_CHARTS = [
   { key: 'omega', title: 'ω from the stress (°)', values: column('omega_macro_deg') },
   { key: 'omega7', title: 'ω from Eq. 7 (°)', values: column('omega_micro_deg') },
   { key: 'a_c', title: 'a_c', values: column('a_c') },
-  { key: 'theta_c', title: 'θ_c (°)', values: column('theta_c_deg') },
+  { key: 'theta_c', title: 'θ_c (°), where a_c ≥ 2× noise floor', values: direction('c'), gaps: true },
   { key: 'a_n', title: 'a_n', values: column('a_n') },
-  { key: 'theta_n', title: 'θ_n (°)', values: column('theta_n_deg') },
+  { key: 'theta_n', title: 'θ_n (°), where a_n ≥ 2× noise floor', values: direction('n'), gaps: true },
   { key: 'a_t', title: 'a_t', values: column('a_t') },
-  { key: 'theta_t', title: 'θ_t (°)', values: column('theta_t_deg') },
+  { key: 'theta_t', title: 'θ_t (°), where a_t ≥ 2× noise floor', values: direction('t'), gaps: true },
   { key: 'a_ln', title: 'a_ln', values: column('a_ln') },
-  { key: 'theta_ln', title: 'θ_ln (°)', values: column('theta_ln_deg') },
+  { key: 'theta_ln', title: 'θ_ln (°), where a_ln ≥ 2× noise floor', values: direction('ln'), gaps: true },
   { key: 'a_lt', title: 'a_lt', values: column('a_lt') },
-  { key: 'theta_lt', title: 'θ_lt (°)', values: column('theta_lt_deg') },
+  { key: 'theta_lt', title: 'θ_lt (°), where a_lt ≥ 2× noise floor', values: direction('lt'), gaps: true },
   { key: 'asymmetry', title: 'σ12 − σ21 (kPa)', values: stressAsymmetry },
 ];
 

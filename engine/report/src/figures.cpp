@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "grainlab/report/ensemble_series.hpp"
 #include "grainlab/report/findings.hpp"
 #include "grainlab/report/markup.hpp"
 #include "grainlab/report/rose_chart.hpp"
@@ -13,19 +14,30 @@
 namespace grainlab::report {
 namespace {
 
-using Pick = std::function<bool(const AssemblyResult&)>;
-
 const std::vector<std::string>& terms() {
   static const std::vector<std::string> t{"c", "n", "t", "ln", "lt"};
   return t;
 }
 
-bool completed(const AssemblyResult& a) { return a.summary.status == "completed" && a.shearing.size() > 0; }
+using Values = std::function<std::vector<double>(const AssemblyResult&)>;
 
-std::vector<const AssemblyResult*> pick(std::span<const AssemblyResult> runs, const Pick& wanted) {
-  std::vector<const AssemblyResult*> out;
-  for (const AssemblyResult& a : runs) {
-    if (completed(a) && wanted(a)) out.push_back(&a);
+// One plotted quantity: a name (the CSV's column stem), how to read it from a run, and how to
+// average it over seeds.
+struct Quantity {
+  std::string name;
+  Values values;
+  bool axial = false;   // a direction: averaged on 2θ
+  bool quorum = false;  // drawn only where at least half the seeds measured it
+};
+
+Quantity column(const std::string& name) {
+  return {name, [name](const AssemblyResult& a) { return a.shearing.column(name); }, false, false};
+}
+
+std::vector<const Ensemble*> pick(const std::vector<Ensemble>& all, const std::function<bool(const Ensemble&)>& wanted) {
+  std::vector<const Ensemble*> out;
+  for (const Ensemble& e : all) {
+    if (!e.runs.empty() && wanted(e)) out.push_back(&e);
   }
   return out;
 }
@@ -34,6 +46,11 @@ std::vector<double> percent(const std::vector<double>& strain) {
   std::vector<double> out(strain);
   for (double& v : out) v *= 100;
   return out;
+}
+
+std::vector<double> scaled(std::vector<double> v, double factor) {
+  for (double& x : v) x *= factor;
+  return v;
 }
 
 // θ_k where a_k ≥ 2× noise floor, NaN elsewhere: the charts draw no direction made of noise.
@@ -47,6 +64,10 @@ std::vector<double> meaningful(const AssemblyResult& a, const std::string& term)
   return out;
 }
 
+Quantity direction(const std::string& term) {
+  return {"theta_" + term + "_deg", [term](const AssemblyResult& a) { return meaningful(a, term); }, true, true};
+}
+
 // ω where φ_mob gives the stress a principal direction, NaN elsewhere.
 std::vector<double> whereSheared(const AssemblyResult& a, const std::string& column) {
   const auto phi = a.shearing.column("phi_mob_deg"), v = a.shearing.column(column);
@@ -56,6 +77,89 @@ std::vector<double> whereSheared(const AssemblyResult& a, const std::string& col
   }
   return out;
 }
+
+Quantity sheared(const std::string& name) {
+  return {name, [name](const AssemblyResult& a) { return whereSheared(a, name); }, false, true};
+}
+
+Quantity noiseFloorQuantity() {
+  return {"noise_floor", [](const AssemblyResult& a) {
+            auto v = a.shearing.column("contacts");
+            for (double& c : v) c = noiseFloor(c);
+            return v;
+          }};
+}
+
+// The CSV behind a figure: one row per assembly and strain of its common strain axis, with
+// each quantity's mean over the seeds and the 95 % interval of that mean.
+std::vector<std::string> ensembleHeader(bool bedding, const std::vector<Quantity>& quantities) {
+  std::vector<std::string> h{"assembly"};
+  if (bedding) h.push_back("bedding_deg");
+  h.push_back("seeds");
+  h.push_back("axial_strain");
+  for (const Quantity& q : quantities) {
+    h.push_back(q.name + "_mean");
+    h.push_back(q.name + "_ci_low");
+    h.push_back(q.name + "_ci_high");
+  }
+  return h;
+}
+
+std::vector<EnsembleBand> bandsOf(const Ensemble& e, const std::vector<Quantity>& quantities) {
+  std::vector<EnsembleBand> bands;
+  for (const Quantity& q : quantities) bands.push_back(ensembleBand(e, q.values, q.axial, q.quorum));
+  return bands;
+}
+
+void addEnsembleRows(CsvTable& t, const Ensemble& e, bool bedding, const std::vector<EnsembleBand>& bands) {
+  if (bands.empty()) return;
+  for (size_t k = 0; k < bands.front().strain.size(); ++k) {
+    std::vector<CsvCell> row{e.preset};
+    if (bedding) row.emplace_back(e.beddingDeg);
+    row.emplace_back(static_cast<int>(e.runs.size()));
+    row.emplace_back(bands.front().strain[k]);
+    for (const EnsembleBand& b : bands) {
+      row.emplace_back(b.stats[k].mean);
+      row.emplace_back(b.stats[k].low);
+      row.emplace_back(b.stats[k].high);
+    }
+    t.addRow(std::move(row));
+  }
+}
+
+// The ensemble on a chart: each seed's run thin and pale, then the mean with its 95 % band
+// (`spread` false: the mean alone).
+void drawBand(ChartSpec& chart, const std::string& label, const std::string& colour, const EnsembleBand& b,
+              double yFactor = 1, bool dashed = false, bool markers = false, bool spread = true) {
+  const auto x = percent(b.strain);
+  if (spread && b.perRun.size() > 1) {
+    for (const auto& run : b.perRun) {
+      LineSeries faint{"", x, scaled(run, yFactor), colour, false, false};
+      faint.faint = true;
+      chart.series.push_back(std::move(faint));
+    }
+  }
+  LineSeries mean{label, x, scaled(b.mean(), yFactor), colour, dashed, markers};
+  if (spread) {
+    mean.low = scaled(b.low(), yFactor);
+    mean.high = scaled(b.high(), yFactor);
+  }
+  chart.series.push_back(std::move(mean));
+}
+
+std::string seedsText(const std::vector<const Ensemble*>& chosen) {
+  size_t lo = 0, hi = 0;
+  for (const Ensemble* e : chosen) {
+    lo = lo ? std::min(lo, e->runs.size()) : e->runs.size();
+    hi = std::max(hi, e->runs.size());
+  }
+  if (hi <= 1) return " One seed per assembly: no interval is drawn.";
+  return " Each line is the mean over " + (lo == hi ? std::to_string(hi) : std::to_string(lo) + "-" + std::to_string(hi)) +
+         " seeds (different random packings), the shading its 95 % t-interval, the pale lines the single runs.";
+}
+
+const std::string kBandCsv = " The CSV holds, per assembly and strain, each quantity's mean over the seeds and its 95 % "
+                             "interval (_mean, _ci_low, _ci_high); each seed's own series is in runs/<preset>/seed-<s>/.";
 
 FigurePanel panel(const ChartSpec& spec) {
   FigurePanel p;
@@ -96,57 +200,66 @@ ChartSpec directionChart(const std::string& id, const std::string& title, const 
   return c;
 }
 
-std::string termLabel(const std::string& term) { return term == "c" ? "c" : term; }
+bool isBeddingEnsemble(const Ensemble& e) { return e.kind == AssemblyKind::Bedding; }
 
-Figure stressAsymmetry(std::span<const AssemblyResult> runs) {
+Figure stressAsymmetry(const std::vector<Ensemble>& all) {
   Figure f;
   f.id = "fig06";
   f.title = "Fig. 6. σ12 − σ21 versus axial strain, bedding assemblies";
+  const auto chosen = pick(all, isBeddingEnsemble);
   f.caption = "The asymmetry of the contact stress σ_ij = (1/A) Σ f_i l_j during shearing; the paper finds it close "
-              "to zero. CSV columns in Pa; asymmetry_over_p = |σ12 − σ21| / p.";
-  f.data = CsvTable({"assembly", "bedding_deg", "axial_strain", "sigma12_minus_sigma21_pa", "p_pa", "asymmetry_over_p"});
+              "to zero. CSV columns in Pa; asymmetry_over_p = |σ12 − σ21| / p." + seedsText(chosen) + kBandCsv;
+  const std::vector<Quantity> quantities{
+      {"sigma12_minus_sigma21_pa",
+       [](const AssemblyResult& a) {
+         auto d = a.shearing.column("sigma12");
+         const auto s21 = a.shearing.column("sigma21");
+         for (size_t r = 0; r < d.size(); ++r) d[r] -= s21[r];
+         return d;
+       }},
+      column("p"),
+      {"asymmetry_over_p", [](const AssemblyResult& a) {
+         const auto s12 = a.shearing.column("sigma12"), s21 = a.shearing.column("sigma21"), p = a.shearing.column("p");
+         std::vector<double> v(p.size(), std::nan(""));
+         for (size_t r = 0; r < p.size(); ++r) {
+           if (p[r] > 0) v[r] = std::abs(s12[r] - s21[r]) / p[r];
+         }
+         return v;
+       }}};
+  f.data = CsvTable(ensembleHeader(true, quantities));
   ChartSpec chart = strainChart("fig06", "σ12 − σ21 during shearing", "σ12 − σ21 (kPa)");
   chart.yReferences = {0};
-  for (const AssemblyResult* a : pick(runs, [](const AssemblyResult& r) { return r.kind == AssemblyKind::Bedding; })) {
-    const auto strain = a->shearing.column("axial_strain"), s12 = a->shearing.column("sigma12"),
-               s21 = a->shearing.column("sigma21"), p = a->shearing.column("p");
-    LineSeries line{a->label(), percent(strain), {}, "", false, false};
-    for (size_t r = 0; r < strain.size(); ++r) {
-      const double d = s12[r] - s21[r];
-      f.data.addRow({a->preset, a->beddingDeg, strain[r], d, p[r], p[r] > 0 ? std::abs(d) / p[r] : std::nan("")});
-      line.y.push_back(d / 1e3);
-    }
-    chart.series.push_back(std::move(line));
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    const auto bands = bandsOf(*chosen[i], quantities);
+    addEnsembleRows(f.data, *chosen[i], true, bands);
+    drawBand(chart, chosen[i]->label(), paletteColour(i), bands[0], 1e-3);
   }
   f.panels.push_back(strainPanel(chart));
   return f;
 }
 
-Figure anisotropyOf(std::span<const AssemblyResult> runs, AssemblyKind kind, const std::string& id, const std::string& who) {
+Figure anisotropyOf(const std::vector<Ensemble>& all, AssemblyKind kind, const std::string& id, const std::string& who) {
   Figure f;
   f.id = id;
   f.title = "Fig. " + std::to_string(std::stoi(id.substr(3))) + ". Anisotropy coefficients and directions, " + who;
-  f.caption = "(a) a_c, a_n, a_t, a_ln, a_lt and (b) θ_c, θ_n, θ_t, θ_ln, θ_lt during shearing. Directions are drawn "
-              "only where their a_k is at least twice the noise floor 1.25·√(2/N_c) (noise_floor in the CSV); below "
-              "it a direction means nothing.";
-  std::vector<std::string> header{"assembly", "axial_strain", "contacts", "noise_floor"};
-  for (const std::string& t : terms()) header.push_back("a_" + t);
-  for (const std::string& t : terms()) header.push_back("theta_" + t + "_deg");
-  f.data = CsvTable(header);
+  const auto chosen = pick(all, [kind](const Ensemble& e) { return e.kind == kind; });
+  f.caption = "(a) a_c, a_n, a_t, a_ln, a_lt and (b) θ_c, θ_n, θ_t, θ_ln, θ_lt during shearing. A run's direction "
+              "counts only where its a_k is at least twice the noise floor 1.25·√(2/N_c) (noise_floor in the CSV); "
+              "below it a direction means nothing, and a mean direction is drawn only where at least half the seeds "
+              "have a meaningful one." + seedsText(chosen) + kBandCsv;
+  std::vector<Quantity> quantities{column("contacts"), noiseFloorQuantity()};
+  for (const std::string& t : terms()) quantities.push_back(column("a_" + t));
+  for (const std::string& t : terms()) quantities.push_back(direction(t));
+  f.data = CsvTable(ensembleHeader(false, quantities));
   ChartSpec coef = strainChart(id + "a", "(a) anisotropy coefficients", "a_k");
   coef.yMin = 0;
   ChartSpec dirs = directionChart(id + "b", "(b) principal directions", "θ_k (°)");
-  for (const AssemblyResult* a : pick(runs, [kind](const AssemblyResult& r) { return r.kind == kind; })) {
-    const auto strain = a->shearing.column("axial_strain"), contacts = a->shearing.column("contacts");
-    for (size_t r = 0; r < strain.size(); ++r) {
-      std::vector<CsvCell> row{a->preset, strain[r], contacts[r], noiseFloor(contacts[r])};
-      for (const std::string& t : terms()) row.emplace_back(a->shearing.at("a_" + t, r));
-      for (const std::string& t : terms()) row.emplace_back(a->shearing.at("theta_" + t + "_deg", r));
-      f.data.addRow(std::move(row));
-    }
-    for (const std::string& t : terms()) {
-      coef.series.push_back({"a_" + termLabel(t), percent(strain), a->shearing.column("a_" + t), "", false, false});
-      dirs.series.push_back({"θ_" + termLabel(t), percent(strain), meaningful(*a, t), "", false, false});
+  for (const Ensemble* e : chosen) {
+    const auto bands = bandsOf(*e, quantities);
+    addEnsembleRows(f.data, *e, false, bands);
+    for (size_t k = 0; k < terms().size(); ++k) {
+      drawBand(coef, "a_" + terms()[k], paletteColour(k), bands[2 + k]);
+      drawBand(dirs, "θ_" + terms()[k], paletteColour(k), bands[2 + terms().size() + k]);
     }
   }
   f.panels.push_back(strainPanel(coef));
@@ -154,40 +267,42 @@ Figure anisotropyOf(std::span<const AssemblyResult> runs, AssemblyKind kind, con
   return f;
 }
 
-Figure beddingTerm(std::span<const AssemblyResult> runs, int number, const std::string& term, const std::string& what) {
+Figure beddingTerm(const std::vector<Ensemble>& all, int number, const std::string& term, const std::string& what) {
   Figure f;
   f.id = (number < 10 ? "fig0" : "fig") + std::to_string(number);
   f.title = "Fig. " + std::to_string(number) + ". " + what + " anisotropy versus axial strain for the bedding angles";
-  f.caption = "(a) a_" + term + " and (b) θ_" + term + " during shearing for α = 0, 30, 60, 90°. θ_" + term +
-              " is drawn only where a_" + term + " is at least twice the noise floor.";
-  f.data = CsvTable({"assembly", "bedding_deg", "axial_strain", "contacts", "noise_floor", "a_" + term,
-                     "theta_" + term + "_deg"});
+  const auto chosen = pick(all, isBeddingEnsemble);
+  f.caption = "(a) a_" + term + " and (b) θ_" + term + " during shearing for α = 0, 30, 60, 90°. A run's θ_" + term +
+              " counts only where its a_" + term + " is at least twice the noise floor; a mean direction is drawn "
+              "only where at least half the seeds have a meaningful one." + seedsText(chosen) + kBandCsv;
+  const std::vector<Quantity> quantities{column("contacts"), noiseFloorQuantity(), column("a_" + term), direction(term)};
+  f.data = CsvTable(ensembleHeader(true, quantities));
   ChartSpec coef = strainChart(f.id + "a", "(a) a_" + term, "a_" + term);
   coef.yMin = 0;
   ChartSpec dirs = directionChart(f.id + "b", "(b) θ_" + term, "θ_" + term + " (°)");
-  for (const AssemblyResult* a : pick(runs, [](const AssemblyResult& r) { return r.kind == AssemblyKind::Bedding; })) {
-    const auto strain = a->shearing.column("axial_strain"), contacts = a->shearing.column("contacts");
-    for (size_t r = 0; r < strain.size(); ++r) {
-      f.data.addRow({a->preset, a->beddingDeg, strain[r], contacts[r], noiseFloor(contacts[r]),
-                     a->shearing.at("a_" + term, r), a->shearing.at("theta_" + term + "_deg", r)});
-    }
-    coef.series.push_back({a->label(), percent(strain), a->shearing.column("a_" + term), "", false, false});
-    dirs.series.push_back({a->label(), percent(strain), meaningful(*a, term), "", false, false});
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    const auto bands = bandsOf(*chosen[i], quantities);
+    addEnsembleRows(f.data, *chosen[i], true, bands);
+    drawBand(coef, chosen[i]->label(), paletteColour(i), bands[2]);
+    drawBand(dirs, chosen[i]->label(), paletteColour(i), bands[3]);
   }
   f.panels.push_back(strainPanel(coef));
   f.panels.push_back(strainPanel(dirs));
   return f;
 }
 
-Figure omegaVersusPhi(std::span<const AssemblyResult> runs) {
+Figure omegaVersusPhi(const std::vector<Ensemble>& all) {
   Figure f;
   f.id = "fig14";
   f.title = "Fig. 14. Non-coaxiality ω versus mobilised friction angle φ_mob";
+  const auto chosen = pick(all, [](const Ensemble&) { return true; });
   f.caption = "ω = θσ − 90° from the stress tensor against φ_mob, following each test in strain order (all six "
-              "assemblies; the paper shows the anisotropic ones). Samples with φ_mob < " +
+              "assemblies; the paper shows the anisotropic ones): the mean ω over the seeds with its 95 % band, "
+              "against the mean φ_mob at the same strain. Samples with φ_mob < " +
               fixed(criteria::kMinPhiMobDeg, 0) + "° are not drawn: there the stress is nearly isotropic and has no "
-              "principal direction.";
-  f.data = CsvTable({"assembly", "axial_strain", "phi_mob_deg", "omega_macro_deg"});
+              "principal direction." + seedsText(chosen) + kBandCsv;
+  const std::vector<Quantity> quantities{column("phi_mob_deg"), sheared("omega_macro_deg")};
+  f.data = CsvTable(ensembleHeader(false, quantities));
   ChartSpec chart;
   chart.id = "fig14";
   chart.title = "ω versus φ_mob";
@@ -195,48 +310,53 @@ Figure omegaVersusPhi(std::span<const AssemblyResult> runs) {
   chart.yLabel = "ω (°)";
   chart.xMin = 0;
   chart.yReferences = {0};
-  for (const AssemblyResult* a : pick(runs, [](const AssemblyResult&) { return true; })) {
-    const auto strain = a->shearing.column("axial_strain"), phi = a->shearing.column("phi_mob_deg"),
-               omega = a->shearing.column("omega_macro_deg");
-    for (size_t r = 0; r < strain.size(); ++r) f.data.addRow({a->preset, strain[r], phi[r], omega[r]});
-    chart.series.push_back({a->label(), phi, whereSheared(*a, "omega_macro_deg"), "", false, true});
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    const auto bands = bandsOf(*chosen[i], quantities);
+    addEnsembleRows(f.data, *chosen[i], false, bands);
+    LineSeries line{chosen[i]->label(), bands[0].mean(), bands[1].mean(), paletteColour(i), false, true};
+    line.low = bands[1].low();
+    line.high = bands[1].high();
+    chart.series.push_back(std::move(line));
   }
   f.panels.push_back(panel(chart));
   return f;
 }
 
-Figure omegaVersusStrain(std::span<const AssemblyResult> runs) {
+Figure omegaVersusStrain(const std::vector<Ensemble>& all) {
   Figure f;
   f.id = "fig15";
   f.title = "Fig. 15. Non-coaxiality ω versus axial strain: stress tensor and Eqs. (7), (10), (11)";
+  const auto chosen = pick(all, [](const Ensemble&) { return true; });
   f.caption = "ω from the stress tensor (θσ = ½ atan2(σ12 + σ21, σ11 − σ22)) and from the fabric by Eq. (7) (all five "
               "terms), Eq. (10) (unweighted mean of θ_c, θ_n, θ_t) and Eq. (11) (Eq. 7 without the ln and lt terms), "
-              "one panel per assembly. Samples with φ_mob < " + fixed(criteria::kMinPhiMobDeg, 0) +
-              "° are not drawn.";
-  f.data = CsvTable({"assembly", "axial_strain", "phi_mob_deg", "omega_macro_deg", "omega_eq7_deg", "omega_eq10_deg",
-                     "omega_eq11_deg"});
+              "one panel per assembly; the band and the pale single runs are the stress tensor's. Samples with "
+              "φ_mob < " + fixed(criteria::kMinPhiMobDeg, 0) + "° are not drawn." + seedsText(chosen) + kBandCsv;
+  const std::vector<Quantity> quantities{column("phi_mob_deg"), sheared("omega_macro_deg"), sheared("omega_micro_deg"),
+                                         sheared("omega_eq10_deg"), sheared("omega_eq11_deg")};
+  std::vector<std::string> header = ensembleHeader(false, quantities);
+  // The CSV keeps the paper's names for the equations' columns.
+  for (std::string& h : header) {
+    if (h.starts_with("omega_micro_deg")) h.replace(0, 15, "omega_eq7_deg");
+  }
+  f.data = CsvTable(header);
   int index = 0;
-  for (const AssemblyResult* a : pick(runs, [](const AssemblyResult&) { return true; })) {
-    const auto strain = a->shearing.column("axial_strain");
-    for (size_t r = 0; r < strain.size(); ++r) {
-      f.data.addRow({a->preset, strain[r], a->shearing.at("phi_mob_deg", r), a->shearing.at("omega_macro_deg", r),
-                     a->shearing.at("omega_micro_deg", r), a->shearing.at("omega_eq10_deg", r),
-                     a->shearing.at("omega_eq11_deg", r)});
-    }
+  for (const Ensemble* e : chosen) {
+    const auto bands = bandsOf(*e, quantities);
+    addEnsembleRows(f.data, *e, false, bands);
     const char letter = static_cast<char>('a' + index++);
-    ChartSpec chart = strainChart("fig15" + std::string(1, letter), "(" + std::string(1, letter) + ") " + a->label(), "ω (°)");
+    ChartSpec chart = strainChart("fig15" + std::string(1, letter), "(" + std::string(1, letter) + ") " + e->label(), "ω (°)");
     chart.yReferences = {0};
-    const auto x = percent(strain);
-    chart.series.push_back({"stress", x, whereSheared(*a, "omega_macro_deg"), "#000000", false, true});
-    chart.series.push_back({"Eq. (7)", x, whereSheared(*a, "omega_micro_deg"), "#D55E00", false, false});
-    chart.series.push_back({"Eq. (10)", x, whereSheared(*a, "omega_eq10_deg"), "#009E73", true, false});
-    chart.series.push_back({"Eq. (11)", x, whereSheared(*a, "omega_eq11_deg"), "#0072B2", true, false});
+    // Only the stress tensor's ω has its band and runs: four overlapping bands would hide each other.
+    drawBand(chart, "stress", "#000000", bands[1], 1, false, true);
+    drawBand(chart, "Eq. (7)", "#D55E00", bands[2], 1, false, false, false);
+    drawBand(chart, "Eq. (10)", "#009E73", bands[3], 1, true, false, false);
+    drawBand(chart, "Eq. (11)", "#0072B2", bands[4], 1, true, false, false);
     f.panels.push_back(strainPanel(chart));
   }
   return f;
 }
 
-Figure roses(std::span<const AssemblyResult> runs) {
+Figure roses(const std::vector<Ensemble>& all) {
   Figure f;
   f.id = "roses";
   f.title = "Rose diagrams at 0 %, 5 % and 20 % axial strain";
@@ -246,7 +366,9 @@ Figure roses(std::span<const AssemblyResult> runs) {
               "dashed. The number at the top right of each rose is the value of its outer ring.";
   f.data = CsvTable({"assembly", "target_strain", "axial_strain", "bin", "bin_centre_deg", "count", "density",
                      "fn_mean", "ft_mean", "density_fit", "fn_fit", "ft_fit"});
-  for (const AssemblyResult* a : pick(runs, [](const AssemblyResult&) { return true; })) {
+  for (const Ensemble* e : pick(all, [](const Ensemble&) { return true; })) {
+    // One packing's roses: the lowest seed's. Histograms of different packings are not averaged.
+    const AssemblyResult* a = e->runs.front();
     std::vector<const analysis::PolarHistograms*> snapshots;
     std::vector<std::string> captions;
     for (const RoseSnapshot& s : a->roses) {
@@ -266,7 +388,7 @@ Figure roses(std::span<const AssemblyResult> runs) {
       }
     }
     const std::string id = "roses-" + a->preset;
-    const std::string title = "Rose diagrams, " + a->label();
+    const std::string title = "Rose diagrams, " + a->label() + (e->runs.size() > 1 ? ", seed " + std::to_string(a->seed) : "");
     f.panels.push_back({id, renderRoseGrid(id, title, snapshots, captions, false),
                         renderRoseGrid(id, title, snapshots, captions, true)});
   }
@@ -276,18 +398,19 @@ Figure roses(std::span<const AssemblyResult> runs) {
 }  // namespace
 
 std::vector<Figure> paperFigures(std::span<const AssemblyResult> runs) {
+  const std::vector<Ensemble> all = groupEnsembles(runs);
   std::vector<Figure> figures;
-  figures.push_back(stressAsymmetry(runs));
-  figures.push_back(anisotropyOf(runs, AssemblyKind::Circular, "fig07", "circular particles"));
-  figures.push_back(anisotropyOf(runs, AssemblyKind::Random, "fig08", "randomly oriented elongated particles"));
-  figures.push_back(beddingTerm(runs, 9, "c", "Contact normal"));
-  figures.push_back(beddingTerm(runs, 10, "n", "Normal contact force"));
-  figures.push_back(beddingTerm(runs, 11, "t", "Tangential contact force"));
-  figures.push_back(beddingTerm(runs, 12, "ln", "Normal branch vector"));
-  figures.push_back(beddingTerm(runs, 13, "lt", "Tangential branch vector"));
-  figures.push_back(omegaVersusPhi(runs));
-  figures.push_back(omegaVersusStrain(runs));
-  figures.push_back(roses(runs));
+  figures.push_back(stressAsymmetry(all));
+  figures.push_back(anisotropyOf(all, AssemblyKind::Circular, "fig07", "circular particles"));
+  figures.push_back(anisotropyOf(all, AssemblyKind::Random, "fig08", "randomly oriented elongated particles"));
+  figures.push_back(beddingTerm(all, 9, "c", "Contact normal"));
+  figures.push_back(beddingTerm(all, 10, "n", "Normal contact force"));
+  figures.push_back(beddingTerm(all, 11, "t", "Tangential contact force"));
+  figures.push_back(beddingTerm(all, 12, "ln", "Normal branch vector"));
+  figures.push_back(beddingTerm(all, 13, "lt", "Tangential branch vector"));
+  figures.push_back(omegaVersusPhi(all));
+  figures.push_back(omegaVersusStrain(all));
+  figures.push_back(roses(all));
   return figures;
 }
 

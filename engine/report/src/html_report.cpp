@@ -1,5 +1,6 @@
 #include "grainlab/report/html_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "grainlab/report/markup.hpp"
@@ -17,6 +18,7 @@ th { background: #f3f3f3; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .verdict { font-weight: bold; white-space: nowrap; }
 .holds { background: #e3f4e1; } .does-not-hold { background: #fbe1de; } .inconclusive { background: #fdf3d7; }
+.not-resolved { background: #e4ebf7; } .diagnostic { color: #555; }
 ul.checks { margin: 0; padding-left: 1.1em; } ul.checks li { margin: 0.1em 0; }
 .note { color: #555; font-size: 0.9em; }
 .panels { display: flex; flex-wrap: wrap; gap: 0.5em; }
@@ -28,19 +30,23 @@ std::string verdictClass(Verdict v) {
   switch (v) {
     case Verdict::Holds: return "holds";
     case Verdict::DoesNotHold: return "does-not-hold";
+    case Verdict::NotResolved: return "not-resolved";
     case Verdict::Inconclusive: return "inconclusive";
   }
   return "inconclusive";
 }
 
-std::string checksText(const Finding& f) {
-  std::string s;
-  for (const Check& c : f.checks) {
-    if (!s.empty()) s += "; ";
-    s += c.subject + ": " + c.measured + " [" + verdictText(c.verdict) + "]";
-  }
-  return s;
+// The seeds a finding was judged on (for "not resolved at N seeds").
+int seedsOf(const Finding& f) {
+  int n = 1;
+  for (const Check& c : f.checks) n = std::max(n, c.runs);
+  return n;
 }
+
+std::string checkVerdict(const Check& c) { return c.diagnostic ? "measured" : verdictText(c.verdict, c.runs); }
+
+// Where the run's files are, relative to report.html.
+std::string runDirectory(const AssemblyResult& a) { return "runs/" + a.preset + "/seed-" + std::to_string(a.seed); }
 
 std::string td(const std::string& text, bool number = false) {
   return std::string(number ? "<td class=\"num\">" : "<td>") + escapeMarkup(text) + "</td>";
@@ -49,22 +55,31 @@ std::string td(const std::string& text, bool number = false) {
 }  // namespace
 
 CsvTable runsTable(std::span<const AssemblyResult> runs) {
-  CsvTable t({"assembly", "status", "error", "particles", "steps", "wall_seconds", "void_ratio_after_consolidation",
-              "paper_void_ratio", "peak_phi_mob_shearing_deg", "shearing_samples", "contacts_at_start", "final_axial_strain"});
+  CsvTable t({"assembly", "seed", "status", "error", "particles", "steps", "wall_seconds", "void_ratio_after_consolidation",
+              "paper_void_ratio", "peak_phi_mob_shearing_deg", "shearing_samples", "contacts_at_start", "final_axial_strain",
+              "directory"});
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
     const size_t n = a.shearing.size();
-    t.addRow({a.preset, a.summary.status, a.summary.error, a.summary.particles, static_cast<double>(a.summary.steps),
+    t.addRow({a.preset, a.seed, a.summary.status, a.summary.error, a.summary.particles, static_cast<double>(a.summary.steps),
               a.summary.wallSeconds, e >= 0 ? e : std::nan(""), paperVoidRatio(a), finiteMax(a.shearing.column("phi_mob_deg")),
               static_cast<int>(n), n ? a.shearing.at("contacts", 0) : std::nan(""),
-              n ? a.shearing.at("axial_strain", n - 1) : std::nan("")});
+              n ? a.shearing.at("axial_strain", n - 1) : std::nan(""), runDirectory(a)});
   }
   return t;
 }
 
 CsvTable findingsTable(const std::vector<Finding>& findings) {
-  CsvTable t({"number", "claim", "criterion", "verdict", "measured", "note"});
-  for (const Finding& f : findings) t.addRow({f.number, f.claim, f.criterion, verdictText(f.verdict), checksText(f), f.note});
+  // One row per check: its quantity's value (the mean over seeds), 95 % interval and verdict,
+  // beside its finding's claim and overall verdict.
+  CsvTable t({"number", "claim", "criterion", "verdict", "subject", "quantity", "value", "seeds", "ci_low", "ci_high",
+              "holds_from", "holds_to", "check_verdict", "measured", "note"});
+  for (const Finding& f : findings) {
+    for (const Check& c : f.checks) {
+      t.addRow({f.number, f.claim, f.criterion, verdictText(f.verdict, seedsOf(f)), c.subject, c.quantity, c.value,
+                c.seeds, c.ciLow, c.ciHigh, c.holdsFrom, c.holdsTo, checkVerdict(c), c.measured, f.note});
+    }
+  }
   return t;
 }
 
@@ -92,21 +107,28 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
          " s.</p>\n";
   }
 
-  o += "<h2 id=\"runs\">Runs</h2>\n<table>\n<tr><th>assembly</th><th>status</th><th>particles</th><th>wall time (s)</th>"
+  if (context.seeds > 1) {
+    o += "<p>Each assembly ran with seeds 1-" + std::to_string(context.seeds) +
+         " (independent random packings); figures show the mean over the seeds with its 95 % t-interval, and each "
+         "finding is judged on that interval: it holds when the whole interval meets the criterion, does not hold "
+         "when none of it does, and is not resolved at that number of seeds when the interval straddles the "
+         "threshold.</p>\n";
+  }
+  o += "<h2 id=\"runs\">Runs</h2>\n<table>\n<tr><th>assembly</th><th>seed</th><th>status</th><th>particles</th><th>wall time (s)</th>"
        "<th>void ratio after consolidation</th><th>paper</th><th>peak φ_mob in shearing (°)</th><th>contacts at ε22 = 0</th>"
        "<th>output</th></tr>\n";
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
-    o += "<tr>" + td(a.preset) +
+    o += "<tr>" + td(a.preset) + td(std::to_string(a.seed), true) +
          td(a.summary.status + (a.summary.error.empty() ? "" : ": " + a.summary.error)) +
          td(std::to_string(a.summary.particles), true) + td(fixed(a.summary.wallSeconds, 1), true) +
          td(e >= 0 ? fixed(e, 3) : "-", true) + td(fixed(paperVoidRatio(a), 3), true) +
          td(fixed(finiteMax(a.shearing.column("phi_mob_deg")), 1), true) +
-         td(a.shearing.size() ? fixed(a.shearing.at("contacts", 0), 0) : "-", true) + "<td><a href=\"runs/" +
-         escapeMarkup(a.preset) + "/series.csv\">series.csv</a></td></tr>\n";
+         td(a.shearing.size() ? fixed(a.shearing.at("contacts", 0), 0) : "-", true) + "<td><a href=\"" +
+         escapeMarkup(runDirectory(a)) + "/series.csv\">series.csv</a></td></tr>\n";
   }
   o += "</table>\n<p>Data: <a href=\"runs.csv\">runs.csv</a>. Each run's own output (series.csv, summary.json, "
-       "final particles and contacts) is in runs/&lt;preset&gt;/.</p>\n";
+       "final particles and contacts, the scene with its seed) is in runs/&lt;preset&gt;/seed-&lt;s&gt;/.</p>\n";
 
   o += "<h2 id=\"findings\">Findings</h2>\n<table class=\"findings\">\n<tr><th>#</th><th>the paper's claim</th>"
        "<th>measured</th><th>verdict</th></tr>\n";
@@ -115,12 +137,12 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
          "</td><td>" + escapeMarkup(f.claim) + "<div class=\"note\">Criterion: " + escapeMarkup(f.criterion) +
          ".</div></td><td><ul class=\"checks\">";
     for (const Check& c : f.checks) {
-      o += "<li class=\"" + verdictClass(c.verdict) + "\">" + escapeMarkup(c.subject) + ": " + escapeMarkup(c.measured) +
-           " <em>(" + verdictText(c.verdict) + ")</em></li>";
+      o += "<li class=\"" + (c.diagnostic ? std::string("diagnostic") : verdictClass(c.verdict)) + "\">" +
+           escapeMarkup(c.subject) + ": " + escapeMarkup(c.measured) + " <em>(" + checkVerdict(c) + ")</em></li>";
     }
     o += "</ul>";
     if (!f.note.empty()) o += "<div class=\"note\">Likely reasons: " + escapeMarkup(f.note) + "</div>";
-    o += "</td><td class=\"verdict " + verdictClass(f.verdict) + "\">" + verdictText(f.verdict) + "</td></tr>\n";
+    o += "</td><td class=\"verdict " + verdictClass(f.verdict) + "\">" + verdictText(f.verdict, seedsOf(f)) + "</td></tr>\n";
   }
   o += "</table>\n<p>Data: <a href=\"findings.csv\">findings.csv</a>. A direction θ_k counts only where a_k is at "
        "least twice the noise floor 1.25·√(2/N_c); claims resting on directions below it are inconclusive, not "

@@ -1,12 +1,15 @@
 #include "grainlab/report/paper_report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 
+#include "grainlab/presets.hpp"
 #include "grainlab/report/figures.hpp"
 #include "grainlab/report/parallel_runs.hpp"
 #include "grainlab/report/run_loader.hpp"
+#include "grainlab/report/run_plan.hpp"
 
 namespace grainlab::report {
 namespace {
@@ -56,26 +59,45 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
   const std::vector<std::string> presets = paperPresets(options.quick);
   const fs::path runsDir = fs::path(options.outDir) / "runs";
   fs::create_directories(runsDir);
-  const unsigned concurrent = options.reportOnly ? 0 : concurrentRuns(options.jobs, presets.size());
+  const size_t planned = presets.size() * static_cast<size_t>(std::max(1, options.seeds));
+  const unsigned concurrent = options.reportOnly ? 0 : concurrentRuns(options.jobs, planned);
   if (progress) {
     if (options.reportOnly) *progress << "[paper] rebuilding the report from " << runsDir.string() << "\n";
-    else *progress << "[paper] " << presets.size() << " assemblies, " << concurrent << " at a time, into " << options.outDir << "\n";
+    else *progress << "[paper] " << presets.size() << " assemblies × " << options.seeds << " seed(s), " << concurrent
+                   << " run(s) at a time, into " << options.outDir << "\n";
   }
-  PaperOutcome outcome;
+  // (1) the runs, (2) executed, each into its own directory.
+  std::vector<std::pair<std::string, int>> toLoad;
   if (options.reportOnly) {
     for (const std::string& preset : presets) {
-      try {
-        outcome.runs.push_back(loadAssemblyResult((runsDir / preset).string(), preset));
-      } catch (const std::exception& e) {
-        AssemblyResult failed;
-        failed.preset = preset;
-        failed.summary.status = "failed";
-        failed.summary.error = e.what();
-        outcome.runs.push_back(std::move(failed));
-      }
+      const std::vector<int> seeds = seedsOnDisk(runsDir.string(), preset);
+      for (int seed : seeds) toLoad.emplace_back(preset, seed);
+      if (seeds.empty()) toLoad.emplace_back(preset, 0);  // 0: the single-run layout runs/<preset>/
     }
   } else {
-    outcome.runs = runAssemblies(presets, runsDir.string(), options.jobs, progress);
+    const std::vector<PlannedRun> plan = planRuns(presets, options.seeds, runsDir.string());
+    executeRuns(plan, options.jobs, progress);
+    for (const PlannedRun& r : plan) toLoad.emplace_back(r.preset, r.seed);
+  }
+  // (3) the report from what is on disk.
+  PaperOutcome outcome;
+  for (const auto& [preset, seed] : toLoad) {
+    const fs::path dir = seed > 0 ? runsDir / preset / ("seed-" + std::to_string(seed)) : runsDir / preset;
+    try {
+      outcome.runs.push_back(loadAssemblyResult(dir.string(), preset));
+      outcome.runs.back().seed = std::max(seed, 1);
+    } catch (const std::exception& e) {
+      AssemblyResult failed;
+      try {
+        failed = describeAssembly(preset, parseScene(presetScene(preset)));
+      } catch (const std::exception&) {
+        failed.preset = preset;
+      }
+      failed.seed = std::max(seed, 1);
+      failed.summary.status = "failed";
+      failed.summary.error = e.what();
+      outcome.runs.push_back(std::move(failed));
+    }
   }
   outcome.allCompleted = true;
   for (const AssemblyResult& a : outcome.runs) outcome.allCompleted = outcome.allCompleted && a.summary.status == "completed";
@@ -84,6 +106,12 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
   context.command = options.command;
   context.quick = options.quick;
   context.concurrentRuns = concurrent;
+  // Seeds per assembly as found (the --report-only case included).
+  context.seeds = 0;
+  for (const std::string& preset : presets) {
+    context.seeds = std::max<int>(context.seeds, static_cast<int>(std::count_if(
+        outcome.runs.begin(), outcome.runs.end(), [&](const AssemblyResult& a) { return a.preset == preset; })));
+  }
   context.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.findings = writePaperReport(options.outDir, outcome.runs, context);
   outcome.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

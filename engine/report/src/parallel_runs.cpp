@@ -4,9 +4,9 @@
 #include <atomic>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
-#include "grainlab/presets.hpp"
 #include "grainlab/report/assembly_recorder.hpp"
 #include "grainlab/report/progress_board.hpp"
 #include "grainlab/scene.hpp"
@@ -20,38 +20,45 @@ unsigned concurrentRuns(unsigned requested, size_t runs) {
   return std::max(1u, n);
 }
 
-std::vector<AssemblyResult> runAssemblies(const std::vector<std::string>& presets, const std::string& runsDir,
-                                          unsigned jobs, std::ostream* progress) {
-  std::vector<AssemblyResult> results(presets.size());
-  ProgressBoard board(progress, presets);
+std::vector<RunSummary> executeRuns(const std::vector<PlannedRun>& plan, unsigned jobs, std::ostream* progress) {
+  std::vector<RunSummary> summaries(plan.size());
+  std::vector<std::string> names;
+  for (const PlannedRun& r : plan) names.push_back(r.id);
+  ProgressBoard board(progress, names);
   std::atomic<size_t> next{0};
 
   auto runOne = [&](size_t k) {
-    const std::string& preset = presets[k];
+    const PlannedRun& run = plan[k];
     try {
-      const Scene scene = parseScene(presetScene(preset));
-      results[k] = describeAssembly(preset, scene);
-      AssemblyRecorder recorder(results[k], (std::filesystem::path(runsDir) / preset).string(), &board, k);
-      runScene(scene, recorder);
+      const Scene scene = parseScene(run.scene);
+      std::filesystem::create_directories(run.dir);
+      {
+        std::ofstream out(std::filesystem::path(run.dir) / "scene.json", std::ios::binary | std::ios::trunc);
+        out << run.scene.dump(2) << "\n";
+        if (!out) throw std::runtime_error("cannot write " + run.dir + "/scene.json");
+      }
+      // The recorder's in-memory result only feeds roses.json; the report reads the disk.
+      AssemblyResult scratch = describeAssembly(run.preset, scene);
+      AssemblyRecorder recorder(scratch, run.dir, &board, k);
+      summaries[k] = runScene(scene, recorder);
     } catch (const std::exception& e) {
-      // Only set-up can throw here (a bad preset, an unwritable directory): runScene reports
-      // a failing simulation in its summary instead.
-      results[k].preset = preset;
-      results[k].summary.status = "failed";
-      results[k].summary.error = e.what();
+      // Only set-up can throw here (a bad scene, an unwritable directory): runScene reports a
+      // failing simulation in its summary instead.
+      summaries[k].status = "failed";
+      summaries[k].error = e.what();
       board.finished(k, "failed: " + std::string(e.what()), 0.0);
     }
   };
   auto worker = [&] {
-    for (size_t k = next++; k < presets.size(); k = next++) runOne(k);
+    for (size_t k = next++; k < plan.size(); k = next++) runOne(k);
   };
 
-  const unsigned n = concurrentRuns(jobs, presets.size());
+  const unsigned n = concurrentRuns(jobs, plan.size());
   std::vector<std::thread> threads;
   for (unsigned t = 1; t < n; ++t) threads.emplace_back(worker);
   worker();  // this thread works too
   for (std::thread& t : threads) t.join();
-  return results;
+  return summaries;
 }
 
 }  // namespace grainlab::report

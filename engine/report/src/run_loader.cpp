@@ -62,9 +62,19 @@ void rosesFromJson(const nlohmann::json& json, std::vector<RoseSnapshot>& roses)
 }
 
 AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& preset) {
-  const Scene scene = parseScene(presetScene(preset));
-  AssemblyResult result = describeAssembly(preset, scene);
   const fs::path dir(runDir);
+  // The scene the run ran (its seed included) when it kept one; else the preset's.
+  nlohmann::json sceneJson = presetScene(preset);
+  if (std::ifstream sceneFile(dir / "scene.json"); sceneFile) {
+    try {
+      sceneFile >> sceneJson;
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error((dir / "scene.json").string() + ": " + e.what());
+    }
+  }
+  const Scene scene = parseScene(sceneJson);
+  AssemblyResult result = describeAssembly(preset, scene);
+  result.seed = static_cast<int>(scene.seed);
 
   std::ifstream summaryFile(dir / "summary.json");
   if (!summaryFile) throw std::runtime_error("cannot read " + (dir / "summary.json").string());

@@ -88,6 +88,9 @@ std::string renderLineChart(const ChartSpec& spec, bool standalone) {
       xhi = std::max(xhi, s.x[k]);
       ylo = std::min(ylo, s.y[k]);
       yhi = std::max(yhi, s.y[k]);
+      for (const std::vector<double>* bound : {&s.low, &s.high}) {
+        if (k < bound->size() && std::isfinite((*bound)[k])) ylo = std::min(ylo, (*bound)[k]), yhi = std::max(yhi, (*bound)[k]);
+      }
     }
   }
   for (double r : spec.yReferences) ylo = std::min(ylo, r), yhi = std::max(yhi, r);
@@ -148,6 +151,28 @@ std::string renderLineChart(const ChartSpec& spec, bool standalone) {
 
   // Data.
   o += "<g clip-path=\"url(#" + clip + ")\" fill=\"none\" stroke-width=\"1.6\">\n";
+  // Bands first, so every line stays visible on top of them.
+  for (size_t i = 0; i < spec.series.size(); ++i) {
+    const LineSeries& s = spec.series[i];
+    if (s.low.size() != s.x.size() || s.high.size() != s.x.size()) continue;
+    const std::string colour = s.colour.empty() ? paletteColour(i) : s.colour;
+    for (const auto& [first, last] : drawableRuns(s.x, s.y, spec.axialY)) {
+      size_t k = first;
+      while (k < last) {
+        while (k < last && !(std::isfinite(s.low[k]) && std::isfinite(s.high[k]))) ++k;
+        size_t end = k;
+        while (end < last && std::isfinite(s.low[end]) && std::isfinite(s.high[end])) ++end;
+        if (end - k >= 2) {
+          std::string points;
+          for (size_t j = k; j < end; ++j) points += px(sx(s.x[j])) + "," + px(sy(s.high[j])) + " ";
+          for (size_t j = end; j-- > k;) points += px(sx(s.x[j])) + "," + px(sy(s.low[j])) + (j > k ? " " : "");
+          o += "<polygon class=\"band\" points=\"" + points + "\" fill=\"" + colour +
+               "\" fill-opacity=\"0.18\" stroke=\"none\"/>\n";
+        }
+        k = end;
+      }
+    }
+  }
   for (size_t i = 0; i < spec.series.size(); ++i) {
     const LineSeries& s = spec.series[i];
     const std::string colour = s.colour.empty() ? paletteColour(i) : s.colour;
@@ -162,7 +187,8 @@ std::string renderLineChart(const ChartSpec& spec, bool standalone) {
         o += "<circle cx=\"" + px(sx(s.x[first])) + "\" cy=\"" + px(sy(s.y[first])) + "\" r=\"1.6\" fill=\"" + colour +
              "\" stroke=\"none\"/>\n";
       } else {
-        o += "<polyline points=\"" + points + "\" stroke=\"" + colour + "\"" + dash + "/>\n";
+        o += "<polyline points=\"" + points + "\" stroke=\"" + colour + "\"" + dash +
+             (s.faint ? " stroke-opacity=\"0.3\" stroke-width=\"0.7\"" : "") + "/>\n";
       }
     }
     if (s.markers) {

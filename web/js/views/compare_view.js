@@ -5,16 +5,26 @@ import { h, replaceChildren } from '../dom.js';
 import { ChartPanel, joinTables } from '../chart_panel.js';
 import { COMPARE_CHARTS, X_AXES, chartDomain } from '../chart_specs.js';
 import { SeriesTable, shearingStages } from '../series_table.js';
+import { ensembleBand } from '../ensemble_stats.js';
 
 export function compareView(root, params) {
   const chosen = new Set((params.get('ids') ?? '').split(',').map(Number).filter((n) => Number.isInteger(n) && n > 0));
   const picker = h('div', { class: 'compare-picker' });
   const status = h('div', { class: 'hint' });
   const grid = h('div', { class: 'compare-grid' });
+  // Ensemble mode: the ticked runs as seeds of one ensemble, drawn as their mean and its 95 %
+  // t-interval (on the first run's strains), with each run faint beneath.
+  let asEnsemble = params.get('mode') === 'ensemble';
+  const modeToggle = h('label', { class: 'compare-mode' },
+    h('input', {
+      type: 'checkbox', checked: asEnsemble, id: 'compare-ensemble',
+      onchange: (event) => { asEnsemble = event.target.checked; redraw(); },
+    }),
+    'Mean of the ticked runs with its 95 % band (as seeds of one ensemble)');
   replaceChildren(root,
     h('div', { class: 'view-title' }, h('h2', {}, 'Compare runs'),
       h('span', { class: 'hint' }, 'Tick the runs to overlay; each chart shows one quantity against axial strain (shearing stage).')),
-    h('div', { class: 'panel' }, picker, status),
+    h('div', { class: 'panel' }, picker, modeToggle, status),
     h('div', { style: { height: '0.8rem' } }),
     grid);
 
@@ -34,7 +44,8 @@ export function compareView(root, params) {
   async function redraw() {
     const mine = ++generation;
     const ids = [...chosen].sort((a, b) => a - b);
-    history.replaceState(null, '', ids.length ? `#/compare?ids=${ids.join(',')}` : '#/compare');
+    const mode = asEnsemble ? '&mode=ensemble' : '';
+    history.replaceState(null, '', ids.length ? `#/compare?ids=${ids.join(',')}${mode}` : '#/compare');
     let runs;
     try {
       runs = await Promise.all(ids.map(load));
@@ -49,13 +60,19 @@ export function compareView(root, params) {
     if (!runs.length) return;
     const domains = runs.map(({ run, table }) => chartDomain(table, X_AXES.strain, shearingStages(run.scene)));
     for (const spec of COMPARE_CHARTS) {
+      if (asEnsemble && runs.length >= 2) {
+        panels.push(ensemblePanel(spec, runs, domains));
+        continue;
+      }
       const panel = new ChartPanel(grid, {
         key: spec.key,
         title: spec.title,
         xLabel: X_AXES.strain.label,
         series: runs.map(({ run }) => ({ label: `#${run.id} ${run.name}` })),
         axes: [{ label: spec.title }],
-        spanGaps: true,
+        // Runs sampled at other strains leave alignment holes that are spanned; a direction's own
+        // gaps (below its noise floor) are kept.
+        spanGaps: !spec.gaps,
         emptyText: 'None of these runs has reached its shearing stage.',
       });
       const tables = runs.map(({ table }, k) => [domains[k].x, spec.values(table, domains[k].rows)]);
@@ -63,6 +80,40 @@ export function compareView(root, params) {
       panel.setData(joined[0], joined.slice(1));
       panels.push(panel);
     }
+  }
+
+  function ensemblePanel(spec, runs, domains) {
+    const tables = runs.map(({ table }, k) => [domains[k].x, spec.values(table, domains[k].rows)]);
+    const band = ensembleBand(tables, { isAxial: Boolean(spec.gaps), quorum: Boolean(spec.gaps) });
+    const colour = '#0072B2';
+    const faint = runs.map(({ run }) => ({ label: `#${run.id}`, stroke: 'rgba(0, 0, 0, 0.25)', width: 0.8 }));
+    const panel = new ChartPanel(grid, {
+      key: spec.key,
+      title: `${spec.title}: mean of ${runs.length} runs, 95 % band`,
+      xLabel: X_AXES.strain.label,
+      series: [...faint,
+        { label: '95 % high', stroke: colour, width: 0.5 },
+        { label: '95 % low', stroke: colour, width: 0.5 },
+        { label: `mean of ${runs.length}`, stroke: colour, width: 2 }],
+      bands: [{ series: [runs.length, runs.length + 1], fill: 'rgba(0, 114, 178, 0.18)' }],
+      axes: [{ label: spec.title }],
+      spanGaps: false,
+      emptyText: 'None of these runs has reached its shearing stage.',
+    });
+    const x = band.x;
+    const perRun = tables.map(([rx, ry]) => {
+      // Each run on the mean's strains, so all series share one x.
+      const out = [];
+      let k = 0;
+      for (const xi of x) {
+        while (k < rx.length && rx[k] < xi) k++;
+        out.push(k < rx.length && rx[k] === xi ? ry[k] : undefined);
+      }
+      return out;
+    });
+    panel.setData(x, [...perRun, band.high, band.low, band.mean]);
+    panel.element.dataset.ensemble = String(runs.length);
+    return panel;
   }
 
   (async () => {

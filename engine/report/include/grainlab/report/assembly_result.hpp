@@ -30,6 +30,7 @@ struct AssemblyResult {
   AssemblyKind kind = AssemblyKind::Circular;
   double beddingDeg = 0;                ///< α, degrees (Bedding only)
   bool quick = false;                   ///< a -quick preset
+  int seed = 1;                         ///< the scene's seed: one member of a seed ensemble
   RunSummary summary;
   ShearingSeries shearing;              ///< the biaxial stage, first row at ε22 = 0
   std::vector<RoseSnapshot> roses;      ///< one per roseStrains() entry

@@ -15,11 +15,12 @@ struct ReportContext {
   std::string command;        ///< the command line that made the report
   bool quick = false;         ///< the -quick presets
   unsigned concurrentRuns = 1;  ///< 0: the report was rebuilt from runs already on disk
+  int seeds = 1;              ///< runs (seeds) per assembly
   double wallSeconds = 0;     ///< s, all runs and the report
 };
 
-/// The runs' table as CSV (runs.csv): preset, status, particles, wall time, void ratios, peak φ_mob
-/// during shearing.
+/// The runs' table as CSV (runs.csv), one row per run (assembly and seed): status, particles,
+/// wall time, void ratios, peak φ_mob during shearing, its output directory.
 CsvTable runsTable(std::span<const AssemblyResult> runs);
 /// The findings as CSV (findings.csv): number, claim, criterion, verdict, measured, note.
 CsvTable findingsTable(const std::vector<Finding>& findings);

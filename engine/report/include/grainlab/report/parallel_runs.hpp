@@ -1,11 +1,13 @@
 #pragma once
-// Runs several presets at once on std::threads, each in its own World with its own observer,
-// so what a run computes does not depend on how many run beside it.
+// Executes a list of planned runs on std::threads, each in its own World with its own
+// observer, so what a run computes does not depend on how many run beside it. Each run's
+// directory is written only by its AssemblyRecorder (and scene.json before it starts); the
+// report reads the runs back from disk. The sweep executor can stand in for this function.
 #include <ostream>
-#include <string>
 #include <vector>
 
-#include "grainlab/report/assembly_result.hpp"
+#include "grainlab/report/run_plan.hpp"
+#include "grainlab/run.hpp"
 
 namespace grainlab::report {
 
@@ -13,11 +15,10 @@ namespace grainlab::report {
 /// more than std::thread::hardware_concurrency() (at least 1) nor than `runs`.
 unsigned concurrentRuns(unsigned requested, size_t runs);
 
-/// Runs each preset (names as presetNames()) with its output in runsDir/<preset>/, at most
-/// concurrentRuns(jobs, presets.size()) at a time. Progress lines go to `progress` (may be
-/// null). Results come back in the order of `presets`; a run that fails, or whose preset or
-/// output directory is bad, has summary.status "failed" and summary.error saying why.
-std::vector<AssemblyResult> runAssemblies(const std::vector<std::string>& presets, const std::string& runsDir,
-                                          unsigned jobs, std::ostream* progress);
+/// Runs every planned run into its directory (scene.json, what `grainlab run` writes, and
+/// roses.json), at most concurrentRuns(jobs, plan.size()) at a time; progress lines go to
+/// `progress` (may be null). Returns each run's summary in the order of `plan`: a run whose
+/// scene or directory is bad has status "failed" and error saying why.
+std::vector<RunSummary> executeRuns(const std::vector<PlannedRun>& plan, unsigned jobs, std::ostream* progress);
 
 }  // namespace grainlab::report

@@ -4,6 +4,7 @@
 // Pure functions of their inputs: the same chart gives the same text.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grainlab::report {
@@ -31,11 +32,20 @@ struct LinearScale {
 const std::string& paletteColour(size_t index);
 
 struct LineSeries {
+  LineSeries() = default;
+  LineSeries(std::string label_, std::vector<double> x_, std::vector<double> y_, std::string colour_ = "",
+             bool dashed_ = false, bool markers_ = false)
+      : label(std::move(label_)), x(std::move(x_)), y(std::move(y_)), colour(std::move(colour_)), dashed(dashed_),
+        markers(markers_) {}
   std::string label;
   std::vector<double> x, y;          ///< same length; a NaN in either leaves a gap
   std::string colour;                ///< CSS colour; empty = palette by position
   bool dashed = false;
   bool markers = false;              ///< a small circle at each point
+  /// A shaded band from low to high (same length as x; empty = none), e.g. a 95 % interval;
+  /// drawn beneath the lines, broken where a bound or the line is missing.
+  std::vector<double> low, high;
+  bool faint = false;                ///< thin and pale: one member of an ensemble
 };
 
 struct ChartSpec {
