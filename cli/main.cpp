@@ -30,7 +30,8 @@ int usage(std::ostream& out, int code) {
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
          "                               speed on settled piles of discs and polygons\n"
-         "  paper --out DIR [--quick] [--jobs N] [--report-only]  the paper's six tests, report.html\n"
+         "  paper --out DIR [--quick] [--seeds N] [--jobs N] [--report-only]\n"
+         "                               the paper's six tests (N seeds each; also under mpirun), report.html\n"
          "  sweep SPEC.json --out DIR [--jobs N]  every run of a parameter sweep (also under mpirun)\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"
 #ifdef GRAINLAB_HAS_SERVER

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "grainlab/report/paper_report.hpp"
+#include "grainlab/studies/cluster.hpp"
 
 namespace grainlab {
 
@@ -38,13 +39,20 @@ int paperCommand(const std::vector<std::string>& args) {
     std::cerr << "grainlab paper: give --out DIR\n";
     return 2;
   }
-  const report::PaperOutcome outcome = report::runPaper(options, &std::cerr);
+  // Under mpirun the ensemble's runs spread over the ranks, as a sweep's do; rank 0 reports.
+  const studies::Cluster cluster;
+  options.cluster = &cluster;
+  if (options.reportOnly && cluster.size() > 1) {
+    if (cluster.isRoot()) std::cerr << "grainlab paper: --report-only runs nothing: run it without mpirun\n";
+    return 2;
+  }
+  const report::PaperOutcome outcome = report::runPaper(options, cluster.isRoot() ? &std::cerr : nullptr);
   int failed = 0;
   for (const report::AssemblyResult& a : outcome.runs) {
     if (a.summary.status == "completed") continue;
     ++failed;
-    std::cerr << "error: " << a.preset << " seed " << a.seed << " " << a.summary.status << (a.summary.error.empty() ? "" : ": " + a.summary.error)
-              << "\n";
+    std::cerr << "error: " << a.preset << " seed " << a.seed << " " << a.summary.status
+              << (a.summary.error.empty() ? "" : ": " + a.summary.error) << "\n";
   }
   return failed ? 1 : 0;
 }

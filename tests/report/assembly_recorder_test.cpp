@@ -47,9 +47,10 @@ TEST_F(Recorder, ShearingStartsFromTheConsolidatedStateAtZeroStrain) {
   scene.stages[1].type = StageSpec::Type::Isotropic;
   scene.stages[2].type = StageSpec::Type::Biaxial;
   World world{Material{}};
-  AssemblyResult result;
-  for (double s : roseStrains()) result.roses.push_back({s, NAN, std::nullopt});
-  AssemblyRecorder recorder(result, dir.string(), nullptr, 0);
+  AssemblyResult initial;
+  for (double s : roseStrains()) initial.roses.push_back({s, NAN, std::nullopt});
+  AssemblyRecorder recorder(std::move(initial), dir.string());
+  const AssemblyResult& result = recorder.result();
   recorder.onStart(scene, world);
 
   const auto h0 = histogramsTagged(100), h1 = histogramsTagged(101), h5 = histogramsTagged(105),
@@ -90,8 +91,8 @@ TEST_F(Recorder, AStartSampleOfItsOwnReplacesTheConsolidationsLast) {
   scene.stages[0].type = StageSpec::Type::Isotropic;
   scene.stages[1].type = StageSpec::Type::Biaxial;
   World world{Material{}};
-  AssemblyResult result;
-  AssemblyRecorder recorder(result, dir.string(), nullptr, 0);
+  AssemblyRecorder recorder(AssemblyResult{}, dir.string());
+  const AssemblyResult& result = recorder.result();
   recorder.onStart(scene, world);
   Sample last = sample(7, 0, 0.01), start = sample(7, 1, 0.0), next = sample(9, 1, 0.01);
   recorder.onSample(last, world);

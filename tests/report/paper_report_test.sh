@@ -24,6 +24,22 @@ cp "$tmp/out/findings.csv" "$tmp/findings-run.csv"
 "$grainlab" paper --quick --out "$tmp/out" --report-only 2> "$tmp/rebuild.txt" || { cat "$tmp/rebuild.txt" >&2; fail "--report-only exited non-zero"; }
 cmp -s "$tmp/out/findings.csv" "$tmp/findings-run.csv" || fail "--report-only gives other findings than the run"
 
+# The ensemble runs through the sweeps' batch executor: run again, it resumes, and under
+# mpirun the runs spread over ranks. With one run's folder gone, `mpirun -np 2` reruns exactly
+# that run (circular-quick, seconds), keeps the others, and rank 0 writes the same findings.
+if command -v mpirun >/dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+  cp "$tmp/out/runs/circular-quick/seed-2/series.csv" "$tmp/series-seed2.csv"
+  rm -rf "$tmp/out/runs/circular-quick/seed-2"
+  mpirun -np 2 --oversubscribe "$grainlab" paper --quick --seeds 2 --out "$tmp/out" 2> "$tmp/mpi.txt" \
+    || { tail -20 "$tmp/mpi.txt" >&2; fail "paper under mpirun exited non-zero"; }
+  grep -q '11 already completed (kept), 1 to run' "$tmp/mpi.txt" || fail "the resume did not rerun exactly one run: $(head -3 "$tmp/mpi.txt")"
+  cmp -s "$tmp/series-seed2.csv" "$tmp/out/runs/circular-quick/seed-2/series.csv" || fail "the rerun under MPI differs"
+  cmp -s "$tmp/out/findings.csv" "$tmp/findings-run.csv" || fail "the resumed ensemble gives other findings"
+else
+  fail "mpirun is missing: ./scripts/setup installs openmpi-bin"
+fi
+
 python3 - "$tmp/out" <<'PY'
 import csv, math, os, re, sys
 out = sys.argv[1]

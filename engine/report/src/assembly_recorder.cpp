@@ -9,9 +9,8 @@
 
 namespace grainlab::report {
 
-AssemblyRecorder::AssemblyRecorder(AssemblyResult& result, std::string runDir, ProgressBoard* board, size_t index)
-    : result_(result), runDir_(runDir), writer_(std::move(runDir), nullptr), board_(board), index_(index),
-      collector_(result, -1) {}
+AssemblyRecorder::AssemblyRecorder(AssemblyResult result, std::string runDir)
+    : result_(std::move(result)), runDir_(runDir), writer_(std::move(runDir), nullptr), collector_(result_, -1) {}
 
 void AssemblyRecorder::onStart(const Scene& scene, const World& world) {
   writer_.onStart(scene, world);
@@ -23,11 +22,6 @@ void AssemblyRecorder::onSample(const Sample& sample, const World& world) {
   collector_.add(sample.step, sample.values, sample.histograms);
 }
 
-void AssemblyRecorder::onProgress(double fraction, std::string_view stage, const World& world) {
-  writer_.onProgress(fraction, stage, world);
-  if (board_) board_->update(index_, fraction, stage);
-}
-
 void AssemblyRecorder::onFinish(const RunSummary& summary, const World& world) {
   writer_.onFinish(summary, world);
   result_.summary = summary;
@@ -35,7 +29,6 @@ void AssemblyRecorder::onFinish(const RunSummary& summary, const World& world) {
   const std::filesystem::path path = std::filesystem::path(runDir_) / kRosesFile;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << rosesToJson(result_.roses).dump() << "\n";
-  if (board_) board_->finished(index_, summary.status, summary.wallSeconds);
 }
 
 }  // namespace grainlab::report

@@ -10,6 +10,7 @@
 #include "grainlab/report/parallel_runs.hpp"
 #include "grainlab/report/run_loader.hpp"
 #include "grainlab/report/run_plan.hpp"
+#include "grainlab/studies/cluster.hpp"
 
 namespace grainlab::report {
 namespace {
@@ -60,11 +61,14 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
   const fs::path runsDir = fs::path(options.outDir) / "runs";
   fs::create_directories(runsDir);
   const size_t planned = presets.size() * static_cast<size_t>(std::max(1, options.seeds));
-  const unsigned concurrent = options.reportOnly ? 0 : concurrentRuns(options.jobs, planned);
+  const bool ranks = options.cluster && options.cluster->size() > 1;
+  const unsigned concurrent = options.reportOnly ? 0
+                              : ranks            ? static_cast<unsigned>(options.cluster->size())
+                                                 : concurrentRuns(options.jobs, planned);
   if (progress) {
     if (options.reportOnly) *progress << "[paper] rebuilding the report from " << runsDir.string() << "\n";
     else *progress << "[paper] " << presets.size() << " assemblies × " << options.seeds << " seed(s), " << concurrent
-                   << " run(s) at a time, into " << options.outDir << "\n";
+                   << " run(s) at a time" << (ranks ? " (MPI ranks)" : "") << ", into " << options.outDir << "\n";
   }
   // (1) the runs, (2) executed, each into its own directory.
   std::vector<std::pair<std::string, int>> toLoad;
@@ -76,7 +80,8 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
     }
   } else {
     const std::vector<PlannedRun> plan = planRuns(presets, options.seeds, runsDir.string());
-    executeRuns(plan, options.jobs, progress);
+    executeRuns(plan, options.jobs, progress, options.cluster);
+    if (options.cluster && !options.cluster->isRoot()) return {};  // rank 0 writes the report
     for (const PlannedRun& r : plan) toLoad.emplace_back(r.preset, r.seed);
   }
   // (3) the report from what is on disk.

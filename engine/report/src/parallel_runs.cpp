@@ -1,15 +1,15 @@
 #include "grainlab/report/parallel_runs.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <thread>
 
 #include "grainlab/report/assembly_recorder.hpp"
-#include "grainlab/report/progress_board.hpp"
+#include "grainlab/report/run_loader.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/studies/cluster.hpp"
+#include "grainlab/studies/run_batch.hpp"
 
 namespace grainlab::report {
 
@@ -20,44 +20,37 @@ unsigned concurrentRuns(unsigned requested, size_t runs) {
   return std::max(1u, n);
 }
 
-std::vector<RunSummary> executeRuns(const std::vector<PlannedRun>& plan, unsigned jobs, std::ostream* progress) {
-  std::vector<RunSummary> summaries(plan.size());
-  std::vector<std::string> names;
-  for (const PlannedRun& r : plan) names.push_back(r.id);
-  ProgressBoard board(progress, names);
-  std::atomic<size_t> next{0};
-
-  auto runOne = [&](size_t k) {
-    const PlannedRun& run = plan[k];
+std::vector<RunSummary> executeRuns(const std::vector<PlannedRun>& plan, unsigned jobs, std::ostream* progress,
+                                    const studies::Cluster* cluster) {
+  std::vector<studies::BatchRun> batch;
+  batch.reserve(plan.size());
+  for (const PlannedRun& run : plan) batch.push_back({run.id, run.dir, run.scene});
+  studies::BatchOptions options;
+  options.jobs = concurrentRuns(jobs, plan.size());
+  options.progress = progress;
+  options.label = "paper";
+  std::map<std::string, const PlannedRun*> byId;
+  for (const PlannedRun& run : plan) byId[run.id] = &run;
+  // The recorder's in-memory result only feeds roses.json; the report reads the disk.
+  options.observer = [&byId](const studies::BatchRun& run,
+                             const std::filesystem::path& workDir) -> std::unique_ptr<RunObserver> {
+    const PlannedRun& planned = *byId.at(run.id);
+    return std::make_unique<AssemblyRecorder>(describeAssembly(planned.preset, parseScene(planned.scene)),
+                                              workDir.string());
+  };
+  const studies::Cluster alone(studies::Cluster::Join::Alone);
+  const std::vector<studies::BatchRunResult> results = studies::runBatch(batch, options, cluster ? *cluster : alone);
+  std::vector<RunSummary> summaries;
+  for (size_t k = 0; k < results.size(); ++k) {
     try {
-      const Scene scene = parseScene(run.scene);
-      std::filesystem::create_directories(run.dir);
-      {
-        std::ofstream out(std::filesystem::path(run.dir) / "scene.json", std::ios::binary | std::ios::trunc);
-        out << run.scene.dump(2) << "\n";
-        if (!out) throw std::runtime_error("cannot write " + run.dir + "/scene.json");
-      }
-      // The recorder's in-memory result only feeds roses.json; the report reads the disk.
-      AssemblyResult scratch = describeAssembly(run.preset, scene);
-      AssemblyRecorder recorder(scratch, run.dir, &board, k);
-      summaries[k] = runScene(scene, recorder);
-    } catch (const std::exception& e) {
-      // Only set-up can throw here (a bad scene, an unwritable directory): runScene reports a
-      // failing simulation in its summary instead.
-      summaries[k].status = "failed";
-      summaries[k].error = e.what();
-      board.finished(k, "failed: " + std::string(e.what()), 0.0);
+      summaries.push_back(readRunSummary(plan[k].dir));
+    } catch (const std::exception& e) {  // not even a summary: the batch's own word on it
+      RunSummary s;
+      s.status = results[k].status;
+      s.error = results[k].error.empty() ? e.what() : results[k].error;
+      summaries.push_back(std::move(s));
     }
-  };
-  auto worker = [&] {
-    for (size_t k = next++; k < plan.size(); k = next++) runOne(k);
-  };
-
-  const unsigned n = concurrentRuns(jobs, plan.size());
-  std::vector<std::thread> threads;
-  for (unsigned t = 1; t < n; ++t) threads.emplace_back(worker);
-  worker();  // this thread works too
-  for (std::thread& t : threads) t.join();
+  }
   return summaries;
 }
 

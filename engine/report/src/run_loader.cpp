@@ -61,6 +61,27 @@ void rosesFromJson(const nlohmann::json& json, std::vector<RoseSnapshot>& roses)
   }
 }
 
+RunSummary readRunSummary(const std::string& runDir) {
+  const fs::path file = fs::path(runDir) / "summary.json";
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  nlohmann::json s;
+  try {
+    in >> s;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+  RunSummary summary;
+  summary.status = s.value("status", std::string("failed"));
+  summary.error = s.value("error", std::string());
+  summary.wallSeconds = s.value("wall_seconds", 0.0);
+  summary.steps = s.value("steps", std::int64_t{0});
+  summary.particles = s.value("particles", 0);
+  summary.peakPhiMobDeg = s.value("peak_phi_mob_deg", 0.0);
+  summary.voidRatioAfterConsolidation = s.value("void_ratio_after_consolidation", -1.0);
+  return summary;
+}
+
 AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& preset) {
   const fs::path dir(runDir);
   // The scene the run ran (its seed included) when it kept one; else the preset's.
@@ -76,21 +97,7 @@ AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& 
   AssemblyResult result = describeAssembly(preset, scene);
   result.seed = static_cast<int>(scene.seed);
 
-  std::ifstream summaryFile(dir / "summary.json");
-  if (!summaryFile) throw std::runtime_error("cannot read " + (dir / "summary.json").string());
-  nlohmann::json s;
-  try {
-    summaryFile >> s;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error((dir / "summary.json").string() + ": " + e.what());
-  }
-  result.summary.status = s.value("status", std::string("failed"));
-  result.summary.error = s.value("error", std::string());
-  result.summary.wallSeconds = s.value("wall_seconds", 0.0);
-  result.summary.steps = s.value("steps", std::int64_t{0});
-  result.summary.particles = s.value("particles", 0);
-  result.summary.peakPhiMobDeg = s.value("peak_phi_mob_deg", 0.0);
-  result.summary.voidRatioAfterConsolidation = s.value("void_ratio_after_consolidation", -1.0);
+  result.summary = readRunSummary(runDir);
 
   std::ifstream series(dir / "series.csv");
   if (!series) throw std::runtime_error("cannot read " + (dir / "series.csv").string());

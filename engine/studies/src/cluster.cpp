@@ -25,8 +25,8 @@ bool Cluster::launchedByMpi() {
   return false;
 }
 
-Cluster::Cluster() {
-  if (!launchedByMpi()) return;
+Cluster::Cluster(Join join) {
+  if (join == Join::Alone || !launchedByMpi()) return;
 #ifdef GRAINLAB_HAS_MPI
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);

@@ -6,27 +6,25 @@
 
 #include "grainlab/output_writer.hpp"
 #include "grainlab/report/assembly_result.hpp"
-#include "grainlab/report/progress_board.hpp"
 #include "grainlab/report/shearing_collector.hpp"
 
 namespace grainlab::report {
 
 class AssemblyRecorder : public RunObserver {
  public:
-  /// Fills `result` (which must outlive the run) and writes the run's files into `runDir`.
-  /// `board` (may be null) receives progress as run `index`.
-  AssemblyRecorder(AssemblyResult& result, std::string runDir, ProgressBoard* board, size_t index);
+  /// Fills its own copy of `result` (see result()) and writes the run's files into `runDir`.
+  AssemblyRecorder(AssemblyResult result, std::string runDir);
+  AssemblyRecorder(const AssemblyRecorder&) = delete;  // the collector refers to result_
+  AssemblyRecorder& operator=(const AssemblyRecorder&) = delete;
+  const AssemblyResult& result() const { return result_; }
   void onStart(const Scene&, const World&) override;
   void onSample(const Sample&, const World&) override;
-  void onProgress(double fraction, std::string_view stage, const World&) override;
   void onFinish(const RunSummary&, const World&) override;
 
  private:
-  AssemblyResult& result_;
+  AssemblyResult result_;
   std::string runDir_;
   OutputWriter writer_;
-  ProgressBoard* board_;
-  size_t index_;
   ShearingCollector collector_;
 };
 

@@ -13,6 +13,8 @@
 #include "grainlab/report/findings.hpp"
 #include "grainlab/report/html_report.hpp"
 
+namespace grainlab::studies { class Cluster; }
+
 namespace grainlab::report {
 
 /// circular, elongated-random, elongated-bedding-{0,30,60,90}; with `quick` their -quick variants.
@@ -28,6 +30,9 @@ struct PaperOptions {
   /// `grainlab paper` left them: every seed-<s> folder found, or the older single-run layout
   /// runs/<preset>/), e.g. after the report's code changed. `seeds` is then ignored.
   bool reportOnly = false;
+  /// The MPI world to spread the runs over (as `grainlab sweep` does); null: this process
+  /// alone. Only rank 0 writes the report.
+  const studies::Cluster* cluster = nullptr;
 };
 
 struct PaperOutcome {

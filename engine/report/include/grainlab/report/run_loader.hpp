@@ -23,6 +23,9 @@ void rosesFromJson(const nlohmann::json& json, std::vector<RoseSnapshot>& roses)
 /// The run of `preset` whose output is in `runDir`: its summary, its shearing series and, if
 /// roses.json is there, its rose snapshots. Throws std::runtime_error naming the file when
 /// series.csv or summary.json is missing or unreadable.
+/// A run directory's summary.json; throws std::runtime_error if it cannot be read.
+RunSummary readRunSummary(const std::string& runDir);
+
 AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& preset);
 
 }  // namespace grainlab::report

@@ -6,10 +6,15 @@ namespace grainlab::studies {
 
 class Cluster {
  public:
-  /// Joins the launcher's MPI world if there is one (MPI_Init_thread, funnelled: only the
-  /// thread that joined calls MPI). Throws std::runtime_error if a launcher started this
-  /// process but this build has no MPI, rather than let every rank run the whole study.
-  Cluster();
+  enum class Join {
+    Launcher,  ///< the launcher's MPI world if there is one
+    Alone,     ///< a world of this process only, MPI untouched (a library caller, a test)
+  };
+  /// Joins the launcher's MPI world if there is one and `join` asks for it (MPI_Init_thread,
+  /// funnelled: only the thread that joined calls MPI). Throws std::runtime_error if a
+  /// launcher started this process but this build has no MPI, rather than let every rank
+  /// run the whole study.
+  explicit Cluster(Join join = Join::Launcher);
   /// Leaves the MPI world (MPI_Finalize) if it joined one.
   ~Cluster();
   Cluster(const Cluster&) = delete;
