@@ -83,6 +83,7 @@ StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
     s.pressure = r.number("pressure", 5e3, 0, kInf, true);
     s.strainRate = r.number("strain_rate", 2.0, 0, kInf, true);
     s.friction = r.number("friction", 0.0, 0, kInf);
+    if (r.has("void_ratio")) s.voidRatio = r.number("void_ratio", 0, 0, 10, true);
   } else if (type == "isotropic") {
     s.type = StageSpec::Type::Isotropic;
     s.pressure = r.number("pressure", 300e3, 0, kInf, true);
