@@ -99,7 +99,7 @@ StressServo MembraneStage::makeServo(double target, double maxRate, double cross
 CompactionStage::CompactionStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane)
     : MembraneStage(spec, output, world, membrane),
       startArea_(membrane.enclosedArea()),
-      jammedArea_(membrane.solidArea() / 0.8) {}
+      jammedArea_(spec.voidRatio ? membrane.solidArea() * (1 + *spec.voidRatio) : membrane.solidArea() / 0.8) {}
 
 double CompactionStage::progress() const {
   if (done_) return 1;
@@ -111,7 +111,7 @@ double CompactionStage::progress() const {
 
 void CompactionStage::control() {
   const double p = stress_.p();
-  if (p >= spec_.pressure) {
+  if (p >= spec_.pressure || (spec_.voidRatio && membrane_.voidRatio() <= *spec_.voidRatio)) {
     done_ = true;
     membrane_.setStrainRates(0, 0);
     return;

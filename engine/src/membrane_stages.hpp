@@ -48,14 +48,15 @@ class MembraneStage : public Stage {
   std::vector<ContactRecord> contacts_;
 };
 
-/// Shrinks the ring equally on both axes, frictionless by default, until p reaches a small
-/// pressure: the particles touch with almost no force.
+/// Shrinks the ring equally on both axes, frictionless by default, until the void ratio
+/// inside the ring reaches `voidRatio` (the particles are close, with almost no force between
+/// them) or p reaches `pressure`, whichever comes first.
 class CompactionStage : public MembraneStage {
  public:
   CompactionStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
   bool finished() const override { return done_ || timedOut(); }
-  /// By area, from the start toward a jammed packing (solid fraction ~0.8): the pressure
-  /// says nothing until the particles touch.
+  /// By area, from the start toward the target void ratio, or without one toward a jammed
+  /// packing (solid fraction ~0.8): the pressure says nothing until the particles touch.
   double progress() const override;
 
  private:

@@ -78,11 +78,13 @@ StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
     if (!r.has("duration")) throw SceneError(r.fieldPath("duration"), "a free stage needs a duration in s");
     s.duration = r.number("duration", 0, 0, kInf, true);
   } else if (type == "compaction") {
-    // The paper's stage 0: frictionless, until the particles touch with almost no force.
+    // The paper's stage 0: frictionless, until the particles are close (void_ratio) with
+    // almost no force (pressure, the backstop).
     s.type = StageSpec::Type::Compaction;
     s.pressure = r.number("pressure", 5e3, 0, kInf, true);
     s.strainRate = r.number("strain_rate", 2.0, 0, kInf, true);
     s.friction = r.number("friction", 0.0, 0, kInf);
+    if (r.has("void_ratio")) s.voidRatio = r.number("void_ratio", 0, 0, 10, true);
   } else if (type == "isotropic") {
     s.type = StageSpec::Type::Isotropic;
     s.pressure = r.number("pressure", 300e3, 0, kInf, true);

@@ -34,6 +34,9 @@ class Membrane {
   double enclosedArea() const;
   /// Solid area of the specimen (non-boundary) particles, m².
   double solidArea() const { return solidArea_; }
+  /// Void ratio of the specimen: (enclosed area − solid area) / solid area. The ring's
+  /// particles are not the specimen's and lie outside the enclosed area.
+  double voidRatio() const { return (enclosedArea() - solidArea_) / solidArea_; }
   int specimenCount() const { return specimenCount_; }
   /// inside[i] = 1 for specimen particles, 0 for the ring.
   const std::vector<unsigned char>& inside() const { return inside_; }

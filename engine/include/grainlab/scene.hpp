@@ -27,6 +27,9 @@ struct StageSpec {
                                   ///< cap) or axial compression rate ε̇22 (biaxial)
   double targetAxialStrain = 0.2; ///< biaxial: stop at this ε22
   std::optional<double> friction; ///< overrides material.friction during the stage
+  /// compaction: also stop once the void ratio inside the ring is this low (the particles are
+  /// close; the pressure end then only catches a packing that jams looser)
+  std::optional<double> voidRatio;
   /// s: the stage ends here even if its criterion is unmet (the parser sets finite defaults)
   double maxTime = std::numeric_limits<double>::infinity();
 };
