@@ -73,6 +73,11 @@ int runCommand(const std::vector<std::string>& args) {
   grainlab::ObserverTee observers{&writer};
   if (scene.output.vtk) observers.add(vtkWriter);
   const grainlab::RunSummary summary = grainlab::runScene(scene, observers);
+  if (scene.output.vtk) {
+    std::cerr << "vtk: " << vtkWriter.frames() << " frames, " << vtkWriter.bytesWritten() / 1e6 << " MB in "
+              << vtkWriter.writeSeconds() << " s (" << 100 * vtkWriter.writeSeconds() / summary.wallSeconds
+              << "% of the run): " << out << "/vtk/run.pvd\n";
+  }
   if (summary.status == "completed") return 0;
   std::cerr << "error: run " << summary.status << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
   return summary.status == "cancelled" ? 3 : 1;

@@ -1,6 +1,7 @@
 #include "grainlab/vtk_writer.hpp"
 
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -103,6 +104,13 @@ std::string frameName(const char* kind, int frame) {
   return b;
 }
 
+// run.pvd is brought up to date at most this often (s of wall time) while the run goes on.
+constexpr double kCollectionEverySeconds = 5.0;
+
+double wallClock() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.17g", v);
@@ -133,9 +141,11 @@ void VtkWriter::onSample(const Sample&, const World& world) {
 void VtkWriter::onFinish(const RunSummary& summary, const World& world) {
   // A failed run's state may be non-finite; its last good state is the last sample's frame.
   if (summary.status != "failed" && world.stepCount() != lastFrameStep_) writeFrame(world);
+  if (!frames_.empty()) writeCollection();
 }
 
 void VtkWriter::writeFrame(const World& world) {
+  const auto start = std::chrono::steady_clock::now();
   const int frame = static_cast<int>(frames_.size());
   const fs::path vtk = fs::path(dir_) / "vtk";
   const int n = world.size();
@@ -240,7 +250,12 @@ void VtkWriter::writeFrame(const World& world) {
 
   frames_.emplace_back(world.time(), frame);
   lastFrameStep_ = world.stepCount();
-  writeCollection();
+  bytes_ += fs::file_size(vtk / frameName("particles", frame)) + fs::file_size(vtk / frameName("contacts", frame));
+  if (collectionWrittenAt_ < 0 || wallClock() - collectionWrittenAt_ > kCollectionEverySeconds) {
+    writeCollection();
+    collectionWrittenAt_ = wallClock();
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void VtkWriter::writeCollection() const {
