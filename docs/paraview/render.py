@@ -10,6 +10,7 @@ import os
 import sys
 
 import vtk
+from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 
 def last(pattern):
@@ -26,11 +27,10 @@ def reader(path):
     return r
 
 
-def main(run_dir, png, size=(900, 900)):
+def main(run_dir, png, size=(1000, 760)):
     particles = reader(last(os.path.join(run_dir, "vtk", "particles_*.vtp")))
     contacts = reader(last(os.path.join(run_dir, "vtk", "contacts_*.vtp")))
     force_range = particles.GetOutput().GetPointData().GetArray("mean_contact_force").GetRange()
-    fn_range = contacts.GetOutput().GetPointData().GetArray("fn").GetRange()
 
     # Discs: a unit circle glyph at each point, scaled by the point's radius (0 on polygons).
     circle = vtk.vtkRegularPolygonSource()
@@ -58,7 +58,7 @@ def main(run_dir, png, size=(900, 900)):
     disc_mapper.SetScalarRange(0, force_range[1])
     discs = vtk.vtkActor()
     discs.SetMapper(disc_mapper)
-    discs.GetProperty().SetOpacity(0.55)
+
 
     # Polygons (elongated presets): their cells, coloured the same way.
     poly_mapper = vtk.vtkPolyDataMapper()
@@ -69,17 +69,23 @@ def main(run_dir, png, size=(900, 900)):
     poly_mapper.SetScalarRange(0, force_range[1])
     polygons = vtk.vtkActor()
     polygons.SetMapper(poly_mapper)
-    polygons.GetProperty().SetOpacity(0.55)
 
-    # Force chains: tubes along the contact lines, radius ∝ fn.
-    contacts.GetOutput().GetPointData().SetActiveScalars("fn")
+
+    # Force chains: tubes along the contact lines, radius ∝ fn (a damped contact pulling apart
+    # can carry a slightly negative fn: no tube for it).
+    chain_fn = vtk_to_numpy(contacts.GetOutput().GetPointData().GetArray("fn")).clip(min=0)
+    mean_radius = float(vtk_to_numpy(particles.GetOutput().GetPointData().GetArray("radius")).max())
+    # The strongest chain is about half a disc radius thick (or 0.6 mm without discs).
+    scale = (0.5 * mean_radius if mean_radius > 0 else 0.0006) / max(chain_fn.max(initial=0), 1e-300)
+    radius = numpy_to_vtk(chain_fn * scale, deep=1)
+    radius.SetName("chain_radius")
+    contacts.GetOutput().GetPointData().AddArray(radius)
+    contacts.GetOutput().GetPointData().SetActiveScalars("chain_radius")
     tubes = vtk.vtkTubeFilter()
-    tubes.SetInputConnection(contacts.GetOutputPort())
+    tubes.SetInputData(contacts.GetOutput())
     tubes.SetVaryRadiusToVaryRadiusByAbsoluteScalar()
     tubes.SetNumberOfSides(8)
     bounds = particles.GetOutput().GetBounds()
-    # The strongest chain a quarter of a mean disc wide... scaled so fn_max maps to ~0.6 mm.
-    tubes.SetRadius(0.0006 / max(fn_range[1], 1e-300))
     tube_mapper = vtk.vtkPolyDataMapper()
     tube_mapper.SetInputConnection(tubes.GetOutputPort())
     tube_mapper.ScalarVisibilityOff()
@@ -97,14 +103,15 @@ def main(run_dir, png, size=(900, 900)):
     bar.GetTitleTextProperty().SetColor(0, 0, 0)
     bar.GetLabelTextProperty().SetColor(0, 0, 0)
     bar.SetNumberOfLabels(4)
-    bar.SetWidth(0.1)
+    bar.SetWidth(0.08)
+    bar.SetPosition(0.89, 0.1)
     renderer.AddActor2D(bar)
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(*size)
     window.AddRenderer(renderer)
     renderer.ResetCamera(bounds)
-    renderer.GetActiveCamera().Zoom(1.1)
+    renderer.GetActiveCamera().Zoom(1.25)
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(window)
