@@ -5,13 +5,14 @@ coefficients, the stress ratio and the non-coaxiality plotted against axial stra
     PYTHONPATH=build/python python3 examples/friction_sweep.py [--preset circular-quick]
         [--frictions 0.1 0.3 0.5 0.7] [--out friction_sweep.png] [--quick]
 
---quick runs two frictions only (the test suite runs it so). The script checks what the
-physics says must hold: the peak mobilised friction angle grows with the interparticle
-friction. It exits non-zero if it does not."""
+--quick runs two frictions only, 0 and 0.5 (the test suite runs it so). The script checks
+what the physics says must hold: friction between the particles raises the peak mobilised
+friction angle of the assembly above that of frictionless particles. For discs it saturates
+beyond μ ≈ 0.3 (they roll instead of sliding), so only the ends of the sweep are compared,
+and by more than 2°: twice the scatter of the peak between runs of a few hundred discs
+(about 1°). It exits non-zero if that does not hold."""
 import argparse
 import sys
-
-import numpy as np
 
 import grainlab
 
@@ -19,11 +20,11 @@ import grainlab
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--preset", default="circular-quick")
-    parser.add_argument("--frictions", type=float, nargs="+", default=[0.1, 0.3, 0.5, 0.7])
+    parser.add_argument("--frictions", type=float, nargs="+", default=[0.0, 0.1, 0.3, 0.5, 0.7])
     parser.add_argument("--out", default="friction_sweep.png", help="the figure (needs matplotlib)")
-    parser.add_argument("--quick", action="store_true", help="two frictions only, 0.1 and 0.5")
+    parser.add_argument("--quick", action="store_true", help="two frictions only, 0 and 0.5")
     args = parser.parse_args()
-    frictions = [0.1, 0.5] if args.quick else args.frictions
+    frictions = [0.0, 0.5] if args.quick else sorted(args.frictions)
 
     runs = {}
     # The series labels rows with the stage's name; the shearing stage is the biaxial one.
@@ -61,9 +62,10 @@ def main():
         fig.savefig(args.out, dpi=110)
         print(f"figure: {args.out}")
 
-    peaks = [runs[mu].summary["peak_phi_mob_deg"] for mu in frictions]
-    if not all(np.diff(peaks) > 0):
-        sys.exit(f"peak phi_mob does not grow with friction: {dict(zip(frictions, peaks))}")
+    peaks = {mu: runs[mu].summary["peak_phi_mob_deg"] for mu in frictions}
+    low, high = frictions[0], frictions[-1]
+    if low <= 0.05 and high >= 0.3 and not peaks[high] - peaks[low] > 2.0:
+        sys.exit(f"peak phi_mob at mu = {high} is not above the one at mu = {low} by 2 degrees: {peaks}")
 
 
 if __name__ == "__main__":
