@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "grainlab/errors.hpp"
+#include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/vtk_writer.hpp"
 #include "bench_command.hpp"
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
@@ -26,6 +28,7 @@ int usage(std::ostream& out, int code) {
          "commands:\n"
          "  run SCENE.json --out DIR     run a scene headless (progress on stderr)\n"
          "  run --preset NAME --out DIR  run a preset\n"
+         "      [--vtk]                  also write ParaView frames to DIR/vtk (output.vtk)\n"
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
@@ -46,8 +49,10 @@ int usage(std::ostream& out, int code) {
 
 int runCommand(const std::vector<std::string>& args) {
   std::string scenePath, preset, out;
+  bool vtk = false;
   for (size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--out" && k + 1 < args.size()) out = args[++k];
+    else if (args[k] == "--vtk") vtk = true;
     else if (args[k] == "--preset" && k + 1 < args.size()) preset = args[++k];
     else if (!args[k].empty() && args[k][0] != '-' && scenePath.empty()) scenePath = args[k];
     else {
@@ -67,8 +72,17 @@ int runCommand(const std::vector<std::string>& args) {
     std::cerr << "error: " << e.field() << ": " << e.reason() << "\n";
     return 2;
   }
+  if (vtk) scene.output.vtk = true;
   grainlab::OutputWriter writer(out, &std::cerr);
-  const grainlab::RunSummary summary = grainlab::runScene(scene, writer);
+  grainlab::VtkWriter vtkWriter(out, scene.output.vtkEvery);
+  grainlab::ObserverTee observers{&writer};
+  if (scene.output.vtk) observers.add(vtkWriter);
+  const grainlab::RunSummary summary = grainlab::runScene(scene, observers);
+  if (scene.output.vtk) {
+    std::cerr << "vtk: " << vtkWriter.frames() << " frames, " << vtkWriter.bytesWritten() / 1e6 << " MB in "
+              << vtkWriter.writeSeconds() << " s (" << 100 * vtkWriter.writeSeconds() / summary.wallSeconds
+              << "% of the run): " << out << "/vtk/run.pvd\n";
+  }
   if (summary.status == "completed") return 0;
   std::cerr << "error: run " << summary.status << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
   return summary.status == "cancelled" ? 3 : 1;

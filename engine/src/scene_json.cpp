@@ -142,6 +142,8 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   o.fabric = r.boolean("fabric", o.fabric);
   o.histograms = r.boolean("histograms", o.histograms);
   o.histogramBins = static_cast<int>(r.integer("histogram_bins", o.histogramBins, 18, 360));
+  o.vtk = r.boolean("vtk", o.vtk);
+  o.vtkEvery = static_cast<int>(r.integer("vtk_every", o.vtkEvery, 1, 1000000));
   r.finish();
   return o;
 }

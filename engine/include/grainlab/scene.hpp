@@ -57,6 +57,8 @@ struct OutputSpec {
   bool fabric = true;             ///< anisotropy parameters and stress directions
   bool histograms = true;         ///< polar histograms at each sample (for the dashboard)
   int histogramBins = 18;
+  bool vtk = false;               ///< ParaView frames in DIR/vtk (grainlab/vtk_writer.hpp)
+  int vtkEvery = 1;               ///< a VTK frame at every vtkEvery-th sample (and at the end)
 };
 
 struct Scene {

@@ -1,0 +1,39 @@
+#pragma once
+// Several observers watching one run (the output files and the VTK frames, say): each call
+// goes to each of them in the order given; the run is cancelled if any of them asks.
+#include <initializer_list>
+#include <vector>
+
+#include "grainlab/run.hpp"
+
+namespace grainlab {
+
+class ObserverTee : public RunObserver {
+ public:
+  ObserverTee() = default;
+  ObserverTee(std::initializer_list<RunObserver*> observers) : observers_(observers) {}
+  void add(RunObserver& observer) { observers_.push_back(&observer); }
+
+  void onStart(const Scene& scene, const World& world) override {
+    for (RunObserver* o : observers_) o->onStart(scene, world);
+  }
+  void onSample(const Sample& sample, const World& world) override {
+    for (RunObserver* o : observers_) o->onSample(sample, world);
+  }
+  void onProgress(double fraction, std::string_view stage, const World& world) override {
+    for (RunObserver* o : observers_) o->onProgress(fraction, stage, world);
+  }
+  bool cancelRequested() override {
+    bool cancel = false;
+    for (RunObserver* o : observers_) cancel = o->cancelRequested() || cancel;
+    return cancel;
+  }
+  void onFinish(const RunSummary& summary, const World& world) override {
+    for (RunObserver* o : observers_) o->onFinish(summary, world);
+  }
+
+ private:
+  std::vector<RunObserver*> observers_;
+};
+
+}  // namespace grainlab

@@ -1,0 +1,117 @@
+"""grainlab.run: a scene run in this process, its results as numpy arrays."""
+import os
+import sys
+
+from . import _grainlab
+from ._scene import scene_text
+from ._tables import from_columns, read_csv, series_array
+
+
+class Run:
+    """One run's results. ``series`` is a numpy structured array with the columns of
+    series.csv (NaN where a value was not measured); ``summary`` the keys of summary.json;
+    ``out`` the output directory, or None."""
+
+    def __init__(self, series, summary, particles, contacts, out=None):
+        self.series = series
+        self.summary = summary
+        self._particles = particles
+        self._contacts = contacts
+        self.out = out
+
+    @classmethod
+    def load(cls, out):
+        """The run that `grainlab run` (or grainlab.run with out=) wrote to the directory ``out``."""
+        import json
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        return cls(read_csv(os.path.join(out, "series.csv")), summary,
+                   read_csv(os.path.join(out, "particles_final.csv")),
+                   read_csv(os.path.join(out, "contacts_final.csv")), out=str(out))
+
+    @property
+    def status(self):
+        return self.summary.get("status")
+
+    def series_df(self):
+        """The series as a pandas DataFrame (pandas is needed only here)."""
+        try:
+            import pandas
+        except ImportError:
+            raise ImportError("Run.series_df needs pandas (Debian: python3-pandas); "
+                              "Run.series is the same table as a numpy array") from None
+        return pandas.DataFrame(self.series)
+
+    def particles(self):
+        """The final particles: id, shape, x, y, angle, vx, vy, spin, radius, boundary."""
+        return self._particles
+
+    def contacts(self):
+        """The final contacts: i, j, px, py, nx, ny, fn, ft, lix, liy, ljx, ljy (contracts.md);
+        a wall contact has j < 0 and NaN for ljx, ljy."""
+        return self._contacts
+
+    def __repr__(self):
+        return (f"<grainlab.Run {self.status}: {len(self.series)} samples, "
+                f"{self.summary.get('particles')} particles, {self.summary.get('steps')} steps>")
+
+
+def _progress_reporter(progress):
+    """A callable(fraction, stage) for the engine, and a function that closes it."""
+    if callable(progress):
+        return progress, lambda: None
+    if not progress:
+        return None, lambda: None
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        tqdm = None
+    if tqdm is not None:
+        bar = tqdm(total=100, unit="%", bar_format="{l_bar}{bar}| {n:.0f}% [{elapsed}<{remaining}]")
+
+        def update(fraction, stage):
+            percent = int(fraction * 100)
+            if percent > bar.n:
+                bar.update(percent - bar.n)
+            bar.set_description(stage, refresh=False)
+        return update, bar.close
+    if not sys.stderr.isatty():
+        return None, lambda: None
+    last = [-1]
+
+    def line(fraction, stage):
+        percent = int(fraction * 100)
+        if percent != last[0]:
+            last[0] = percent
+            sys.stderr.write(f"\r[{percent:3d}%] {stage:<20}")
+            sys.stderr.flush()
+    return line, lambda: sys.stderr.write("\n")
+
+
+def run(scene, out=None, progress=True):
+    """Runs a scene (dict, preset name, scene file path or JSON text) in this process and
+    returns a Run. With ``out``, writes what `grainlab run --out` writes (and the VTK frames if
+    the scene's output asks for them). ``progress``: True for a tqdm bar (when tqdm is
+    installed; otherwise a line on a terminal's stderr), False for none, or a
+    callable(fraction, stage). The GIL is released while the engine runs; Ctrl-C stops the
+    run cleanly (its files say cancelled) and raises KeyboardInterrupt. A bad scene raises
+    SceneError before anything is written; a run that fails is returned with
+    ``summary["status"] == "failed"`` and the reason in ``summary["error"]``."""
+    out_dir = "" if out is None else os.fspath(out)
+    callback, close = _progress_reporter(progress)
+    try:
+        if isinstance(scene, str) and scene in _grainlab.presets():
+            # The preset's own scene, exactly as `grainlab run --preset` builds it.
+            result = _grainlab.run_preset(scene, out_dir, callback)
+        else:
+            result = _grainlab.run_json(scene_text(scene), out_dir, callback)
+    finally:
+        close()
+    series = series_array(result["columns"], result["stages"], result["values"])
+    summary = result["summary"]
+    if out_dir:  # the file has a few more keys (profile, speed)
+        import json
+        with open(os.path.join(out_dir, "summary.json")) as f:
+            summary = json.load(f)
+    return Run(series, summary, from_columns(result["particles"]),
+               from_columns(result["contacts"]), out=out_dir or None)

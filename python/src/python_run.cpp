@@ -1,0 +1,175 @@
+#include "python_run.hpp"
+
+#include <optional>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "grainlab/observer_tee.hpp"
+#include "grainlab/output_writer.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/vtk_writer.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab::python {
+namespace {
+
+// Keeps what the run produces in memory and relays progress to Python. Runs on the thread
+// that called grainlab.run, with the GIL released except inside onProgress.
+class Collector : public RunObserver {
+ public:
+  explicit Collector(py::object progress) : progress_(std::move(progress)) {}
+
+  void onSample(const Sample& sample, const World&) override {
+    rows_.push_back(sample.values);
+    stages_.push_back(sample.stage);
+  }
+
+  void onProgress(double fraction, std::string_view stage, const World&) override {
+    if (cancel_) return;
+    py::gil_scoped_acquire gil;
+    // Python's SIGINT handler only runs when asked: here, every few hundred steps.
+    if (PyErr_CheckSignals() != 0) {
+      error_.emplace();
+      cancel_ = true;
+      return;
+    }
+    if (progress_.is_none()) return;
+    try {
+      progress_(fraction, std::string(stage));
+    } catch (py::error_already_set& e) {
+      error_.emplace(std::move(e));
+      cancel_ = true;
+    }
+  }
+
+  bool cancelRequested() override { return cancel_; }
+
+  void onFinish(const RunSummary& summary, const World& world) override {
+    summary_ = summary;
+    timestep_ = world.timestep();
+    criticalTimestep_ = world.criticalTimestep();
+    const auto x = world.positions();
+    const auto v = world.velocities();
+    for (int k = 0; k < world.size(); ++k) {
+      id_.push_back(k);
+      shape_.push_back(world.shapes()[k] == ShapeKind::Disc ? "disc" : "polygon");
+      px_.push_back(x[k].x());
+      py_.push_back(x[k].y());
+      angle_.push_back(world.angles()[k]);
+      vx_.push_back(v[k].x());
+      vy_.push_back(v[k].y());
+      spin_.push_back(world.spins()[k]);
+      radius_.push_back(world.boundingRadii()[k]);
+      boundary_.push_back(world.boundaryFlags()[k] ? 1 : 0);
+    }
+    world.contacts(contacts_);
+  }
+
+  // Called with the GIL held, after the run.
+  py::dict result() {
+    if (error_) {
+      // Ctrl-C or the callable's own exception, raised only now that the run has stopped.
+      error_->restore();
+      error_.reset();
+      throw py::error_already_set();
+    }
+    py::dict out;
+    out["columns"] = seriesColumns();
+    out["stages"] = stages_;
+    const auto cols = static_cast<py::ssize_t>(seriesColumns().size());
+    py::array_t<double> values({static_cast<py::ssize_t>(rows_.size()), cols});
+    auto m = values.mutable_unchecked<2>();
+    for (size_t r = 0; r < rows_.size(); ++r)
+      for (py::ssize_t c = 0; c < cols; ++c) m(static_cast<py::ssize_t>(r), c) = rows_[r][static_cast<size_t>(c)];
+    out["values"] = values;
+
+    // The keys of summary.json (OutputWriter).
+    py::dict s;
+    s["status"] = summary_.status;
+    if (!summary_.error.empty()) s["error"] = summary_.error;
+    s["wall_seconds"] = summary_.wallSeconds;
+    s["sample_seconds"] = summary_.sampleSeconds;
+    s["steps"] = summary_.steps;
+    s["particles"] = summary_.particles;
+    s["peak_phi_mob_deg"] = summary_.peakPhiMobDeg;
+    if (!summary_.notes.empty()) s["notes"] = summary_.notes;
+    if (summary_.voidRatioAfterConsolidation >= 0)
+      s["void_ratio_after_consolidation"] = summary_.voidRatioAfterConsolidation;
+    s["timestep"] = timestep_;
+    s["critical_timestep"] = criticalTimestep_;
+    out["summary"] = s;
+
+    py::dict p;
+    p["id"] = column(id_);
+    p["shape"] = py::array(py::cast(shape_));
+    p["x"] = column(px_);
+    p["y"] = column(py_);
+    p["angle"] = column(angle_);
+    p["vx"] = column(vx_);
+    p["vy"] = column(vy_);
+    p["spin"] = column(spin_);
+    p["radius"] = column(radius_);
+    p["boundary"] = column(boundary_);
+    out["particles"] = p;
+
+    std::vector<long long> ci, cj;
+    std::vector<double> cols12[10];
+    const double nan = std::nan("");
+    for (const ContactRecord& c : contacts_) {
+      ci.push_back(c.i);
+      cj.push_back(c.j);
+      const Vec2 li = c.point - Vec2(px_[c.i], py_[c.i]);
+      const Vec2 lj = c.isWall() ? Vec2(nan, nan) : Vec2(c.point - Vec2(px_[c.j], py_[c.j]));
+      const double row[10] = {c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.fn, c.ft,
+                              li.x(),      li.y(),      lj.x(),       lj.y()};
+      for (int k = 0; k < 10; ++k) cols12[k].push_back(row[k]);
+    }
+    py::dict c;
+    c["i"] = column(ci);
+    c["j"] = column(cj);
+    const char* names[10] = {"px", "py", "nx", "ny", "fn", "ft", "lix", "liy", "ljx", "ljy"};
+    for (int k = 0; k < 10; ++k) c[names[k]] = column(cols12[k]);
+    out["contacts"] = c;
+    return out;
+  }
+
+ private:
+  py::object progress_;
+  bool cancel_ = false;
+  std::optional<py::error_already_set> error_;
+  std::vector<std::vector<double>> rows_;
+  std::vector<std::string> stages_;
+  RunSummary summary_;
+  double timestep_ = 0, criticalTimestep_ = 0;
+  std::vector<long long> id_;
+  std::vector<std::string> shape_;
+  std::vector<double> px_, py_, angle_, vx_, vy_, spin_, radius_;
+  std::vector<unsigned char> boundary_;
+  std::vector<ContactRecord> contacts_;
+};
+
+}  // namespace
+
+py::dict runScene(const Scene& scene, const std::string& out, const py::object& progress) {
+  Collector collector(progress);
+  ObserverTee observers{&collector};
+  std::optional<OutputWriter> files;
+  std::optional<VtkWriter> vtk;
+  if (!out.empty()) {
+    files.emplace(out, nullptr);
+    observers.add(*files);
+    if (scene.output.vtk) {
+      vtk.emplace(out, scene.output.vtkEvery);
+      observers.add(*vtk);
+    }
+  }
+  {
+    py::gil_scoped_release release;
+    grainlab::runScene(scene, observers);
+  }
+  return collector.result();
+}
+
+}  // namespace grainlab::python

@@ -1,0 +1,78 @@
+"""grainlab.Client against a real server started here (`grainlab serve --port 0` on a
+throw-away database): submit a preset, wait for it, fetch its series, which must be the CLI's
+own run of the same preset, bit for bit; a bad scene is refused with the field named."""
+import os
+import re
+import shutil
+import subprocess
+import time
+import unittest
+
+import numpy as np
+
+import grainlab
+from support import CLI, CLI_RUN, PRESET, WORK
+
+
+class ClientTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = os.path.join(WORK, "client")
+        shutil.rmtree(cls.dir, ignore_errors=True)
+        os.makedirs(cls.dir)
+        cls.log = open(os.path.join(cls.dir, "serve.log"), "w+")
+        cls.server = subprocess.Popen([CLI, "serve", "--host", "127.0.0.1", "--port", "0", "--db",
+                                       os.path.join(cls.dir, "test.db")], stderr=cls.log, stdout=cls.log)
+        port = None
+        for _ in range(200):
+            cls.log.seek(0)
+            m = re.search(r"listening on http://127\.0\.0\.1:(\d+)", cls.log.read())
+            if m:
+                port = m.group(1)
+                break
+            if cls.server.poll() is not None:
+                break
+            time.sleep(0.1)
+        if port is None:
+            cls.tearDownClass()
+            raise RuntimeError("the server did not start")
+        cls.client = grainlab.Client(f"http://127.0.0.1:{port}")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.server.terminate()
+        cls.server.wait(timeout=30)
+        cls.log.close()
+
+    def test_health_and_presets(self):
+        self.assertEqual(self.client.health()["status"], "ok")
+        self.assertEqual(self.client.presets(), grainlab.presets())
+
+    def test_submit_wait_fetch(self):
+        run_id = self.client.submit(PRESET)
+        self.assertIn(run_id, [r["id"] for r in self.client.runs()])
+        run = self.client.wait(run_id, timeout=600, poll=0.2)
+        self.assertEqual(run["status"], "completed")
+        series = self.client.series(run_id)
+        cli = grainlab.read_csv(os.path.join(CLI_RUN, "series.csv"))
+        self.assertEqual(series.dtype.names, cli.dtype.names)
+        self.assertEqual(len(series), len(cli))
+        for name in cli.dtype.names:
+            if name == "stage":
+                self.assertEqual(list(series[name]), list(cli[name]))
+            else:
+                self.assertTrue(np.array_equal(series[name], cli[name], equal_nan=True), name)
+
+    def test_bad_scene(self):
+        scene = grainlab.preset(PRESET)
+        scene["material"]["friction"] = -1
+        with self.assertRaises(grainlab.SceneError) as ctx:
+            self.client.submit(scene)
+        self.assertEqual(ctx.exception.field, "material.friction")
+        with self.assertRaises(grainlab.ServerError) as ctx:
+            self.client.get(999999)
+        self.assertEqual(ctx.exception.status, 404)
+
+
+if __name__ == "__main__":
+    unittest.main()
