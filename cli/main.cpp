@@ -6,12 +6,10 @@
 #include <vector>
 
 #include "grainlab/errors.hpp"
-#include "grainlab/observer_tee.hpp"
-#include "grainlab/output_writer.hpp"
+#include "grainlab/run_output.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
-#include "grainlab/vtk_writer.hpp"
 #include "bench_command.hpp"
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
@@ -73,14 +71,11 @@ int runCommand(const std::vector<std::string>& args) {
     return 2;
   }
   if (vtk) scene.output.vtk = true;
-  grainlab::OutputWriter writer(out, &std::cerr);
-  grainlab::VtkWriter vtkWriter(out, scene.output.vtkEvery);
-  grainlab::ObserverTee observers{&writer};
-  if (scene.output.vtk) observers.add(vtkWriter);
-  const grainlab::RunSummary summary = grainlab::runScene(scene, observers);
-  if (scene.output.vtk) {
-    std::cerr << "vtk: " << vtkWriter.frames() << " frames, " << vtkWriter.bytesWritten() / 1e6 << " MB in "
-              << vtkWriter.writeSeconds() << " s (" << 100 * vtkWriter.writeSeconds() / summary.wallSeconds
+  grainlab::RunOutput output(out, scene, &std::cerr);
+  const grainlab::RunSummary summary = grainlab::runScene(scene, output);
+  if (const grainlab::VtkWriter* vtkWriter = output.vtk()) {
+    std::cerr << "vtk: " << vtkWriter->frames() << " frames, " << vtkWriter->bytesWritten() / 1e6 << " MB in "
+              << vtkWriter->writeSeconds() << " s (" << 100 * vtkWriter->writeSeconds() / summary.wallSeconds
               << "% of the run): " << out << "/vtk/run.pvd\n";
   }
   if (summary.status == "completed") return 0;

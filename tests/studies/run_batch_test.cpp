@@ -73,6 +73,14 @@ TEST_F(RunBatchTest, EachRunWritesWhatGrainlabRunWrites) {
   for (const auto& entry : fs::directory_iterator(dir_)) EXPECT_EQ(entry.path().extension(), "") << entry.path();
 }
 
+TEST_F(RunBatchTest, ParaViewFramesWhenTheSceneAsksAsGrainlabRunWrites) {
+  runs_.resize(1);
+  runs_[0].scene["output"]["vtk"] = true;
+  ASSERT_EQ(run()[0].status, "completed");
+  EXPECT_TRUE(fs::exists(runs_[0].dir / "vtk" / "run.pvd"));
+  EXPECT_TRUE(fs::exists(runs_[0].dir / "vtk" / "particles_0000.vtp"));
+}
+
 TEST_F(RunBatchTest, RunningAgainRerunsExactlyWhatIsMissing) {
   run();
   const auto kept = fs::last_write_time(runs_[0].dir / "series.csv");

@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "batch_execution.hpp"
-#include "grainlab/output_writer.hpp"
+#include "grainlab/run_output.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/studies/cluster.hpp"
 
@@ -87,7 +87,7 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     writeText(work / kSceneFile, run.scene.dump(2) + "\n");
     const Scene scene = parseScene(run.scene);
     std::unique_ptr<RunObserver> observer =
-        factory ? factory(run, work) : std::make_unique<OutputWriter>(work.string(), nullptr);
+        factory ? factory(run, work) : std::make_unique<RunOutput>(work.string(), scene, nullptr);
     ProgressRelay relay(*observer, progress, run.id);
     const RunSummary summary = runScene(scene, relay);
     result.status = summary.status;

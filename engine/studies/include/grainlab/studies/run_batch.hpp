@@ -36,7 +36,7 @@ struct BatchRunResult {
 };
 
 /// Builds the observer that writes one run's files into `workDir` (the partial directory).
-/// The default writes exactly what `grainlab run` writes (OutputWriter).
+/// The default writes exactly what `grainlab run` writes (RunOutput).
 using ObserverFactory =
     std::function<std::unique_ptr<RunObserver>(const BatchRun& run, const std::filesystem::path& workDir)>;
 
@@ -44,7 +44,7 @@ struct BatchOptions {
   unsigned jobs = 0;                 ///< runs at once in this process; 0 = hardware threads, or 1 per rank under MPI
   std::ostream* progress = nullptr;  ///< progress lines (written by rank 0 only); may be null
   std::string label = "batch";       ///< the progress lines' prefix, e.g. "sweep"
-  ObserverFactory observer;          ///< empty = OutputWriter
+  ObserverFactory observer;          ///< empty = RunOutput, as `grainlab run`
 };
 
 /// Runs every run not yet completed in its directory. On rank 0 (or without MPI) returns one
