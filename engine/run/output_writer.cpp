@@ -20,18 +20,17 @@ std::string num(double v) {
   return b;
 }
 
-// Writes `text` to path via a temporary file and a rename: readers see all or nothing.
-void writeAtomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
   {
-    std::ofstream out(tmp, std::ios::binary);
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    if (!out) throw std::runtime_error("cannot write " + tmp);
   }
   fs::rename(tmp, path);
 }
-
-}  // namespace
 
 OutputWriter::OutputWriter(std::string directory, std::ostream* progress)
     : dir_(std::move(directory)), progress_(progress) {}
@@ -70,7 +69,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
                  num(v[k].y()) + "," + num(world.spins()[k]) + "," + num(world.boundingRadii()[k]) + "," +
                  (world.boundaryFlags()[k] ? "1" : "0") + "\n";
   }
-  writeAtomically(dir / "particles_final.csv", particles);
+  writeFileAtomically((dir / "particles_final.csv").string(), particles);
 
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
@@ -88,7 +87,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
     }
     text += "\n";
   }
-  writeAtomically(dir / "contacts_final.csv", text);
+  writeFileAtomically((dir / "contacts_final.csv").string(), text);
 
   nlohmann::json s;
   s["status"] = summary.status;
@@ -108,7 +107,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
   s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
                           {"neighbor_rebuilds", p.rebuilds},
                           {"box2d_manifolds", p.box2dCalls}};
-  writeAtomically(dir / "summary.json", s.dump(2) + "\n");
+  writeFileAtomically((dir / "summary.json").string(), s.dump(2) + "\n");
   if (progress_) {
     *progress_ << summary.status << " in " << summary.wallSeconds << " s, " << summary.steps << " steps"
                << (summary.error.empty() ? "" : ": " + summary.error) << "\n";

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 #include "grainlab/output_writer.hpp"
@@ -34,6 +35,15 @@ std::string seriesHeader() {
   std::string line;
   for (const std::string& c : seriesColumns()) line += (line.empty() ? "" : ",") + c;
   return line;
+}
+
+std::vector<std::string> splitSeriesRow(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
 }
 
 std::string formatSeriesRow(const Sample& sample) {

@@ -33,7 +33,11 @@ def _geometry(contacts, particles, inside):
         # play no part). Every particle counts unless `inside` says otherwise.
         if not all(k in c for k in ("lix", "liy", "ljx", "ljy")):
             raise ValueError("contacts: without a particle table the columns lix, liy, ljx, ljy are needed")
+        # Particles after the last one that touches anything have no contact to place them:
+        # they still count for `inside`, at a centroid that no contact uses.
         n = int(max(i.max(initial=-1), j.max(initial=-1))) + 1
+        if inside is not None:
+            n = max(n, len(inside))
         centroids = np.zeros((n, 2))
         point = np.column_stack([columns["px"], columns["py"]])
         centroids[i] = point - np.column_stack([c["lix"], c["liy"]]).astype(np.float64)

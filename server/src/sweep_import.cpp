@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/server/import.hpp"
 #include "repository.hpp"
@@ -29,21 +30,12 @@ nlohmann::json readJson(const fs::path& file) {
   }
 }
 
-std::vector<std::string> splitCells(const std::string& line) {
-  std::vector<std::string> cells;  // series.csv never quotes: its only text cells are stage names
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
 // series.csv back into sample rows, column by column name (an empty cell is "not measured").
 std::vector<SampleRecord> readSeries(const fs::path& file) {
   std::ifstream in(file);
   std::string line;
   if (!in || !std::getline(in, line)) return {};
-  const std::vector<std::string> header = splitCells(line);
+  const std::vector<std::string> header = splitSeriesRow(line);
   std::vector<long> slot(header.size(), -1);  // header column -> seriesColumns() index
   for (size_t c = 0; c < header.size(); ++c) {
     for (size_t k = 0; k < seriesColumns().size(); ++k) {
@@ -53,7 +45,7 @@ std::vector<SampleRecord> readSeries(const fs::path& file) {
   std::vector<SampleRecord> samples;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    const std::vector<std::string> cells = splitCells(line);
+    const std::vector<std::string> cells = splitSeriesRow(line);
     SampleRecord s;
     s.seq = static_cast<std::int64_t>(samples.size());
     s.values.assign(seriesColumns().size(), NAN);

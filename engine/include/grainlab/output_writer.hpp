@@ -4,6 +4,7 @@
 // written to a temporary name and renamed, so a reader never sees half a file.
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "grainlab/run.hpp"
 
@@ -29,5 +30,12 @@ class OutputWriter : public RunObserver {
 std::string formatSeriesRow(const Sample& sample);
 /// The header line of series.csv.
 std::string seriesHeader();
+/// One line of series.csv split into its cells (series.csv never quotes: its only text
+/// cells are stage names); a trailing empty cell is kept.
+std::vector<std::string> splitSeriesRow(const std::string& line);
+
+/// Writes `text` to `path` through a temporary file and a rename: a reader (or a resume)
+/// sees the whole file or none of it. Throws std::runtime_error if it cannot.
+void writeFileAtomically(const std::string& path, const std::string& text);
 
 }  // namespace grainlab

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "grainlab/presets.hpp"
+#include "grainlab/output_writer.hpp"
 #include "grainlab/report/figures.hpp"
 #include "grainlab/report/parallel_runs.hpp"
 #include "grainlab/report/run_loader.hpp"
@@ -17,16 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void writeText(const fs::path& path, const std::string& text) {
-  // Through a temporary name, so a reader never sees half a report.
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
-}
+// Through a temporary name, so a reader never sees half a report.
+void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path.string(), text); }
 
 }  // namespace
 

@@ -10,22 +10,13 @@
 #include "grainlab/presets.hpp"
 #include "grainlab/report/assembly_recorder.hpp"
 #include "grainlab/report/shearing_collector.hpp"
+#include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
 
 namespace grainlab::report {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<std::string> splitCells(const std::string& line) {
-  // series.csv never quotes: its only text cells are stage names.
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
 
 }  // namespace
 
@@ -103,7 +94,7 @@ AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& 
   if (!series) throw std::runtime_error("cannot read " + (dir / "series.csv").string());
   std::string line;
   std::getline(series, line);
-  const std::vector<std::string> header = splitCells(line);
+  const std::vector<std::string> header = splitSeriesRow(line);
   // Columns by name, so a series.csv with columns added or moved still reads.
   std::vector<int> slot(header.size(), -1);
   for (size_t k = 0; k < header.size(); ++k) {
@@ -115,7 +106,7 @@ AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& 
   ShearingCollector collector(result, biaxialStageIndex(scene));
   while (std::getline(series, line)) {
     if (line.empty()) continue;
-    const std::vector<std::string> cells = splitCells(line);
+    const std::vector<std::string> cells = splitSeriesRow(line);
     std::vector<double> values(seriesColumns().size(), NAN);
     for (size_t k = 0; k < cells.size() && k < slot.size(); ++k) {
       if (slot[k] < 0) continue;

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "grainlab/errors.hpp"
+#include "grainlab/output_writer.hpp"
 #include "grainlab/studies/cluster.hpp"
 #include "grainlab/studies/run_batch.hpp"
 #include "grainlab/studies/sweep_table.hpp"
@@ -15,17 +16,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* kSweepFile = "sweep.json";
 constexpr const char* kTableFile = "sweep.csv";
-
-// Through a temporary name, so a reader (or a resume) never sees half a file.
-void writeAtomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
-}
 
 nlohmann::ordered_json describeSweep(const SweepSpec& spec, const std::vector<SweepRun>& runs) {
   nlohmann::ordered_json doc;
@@ -66,7 +56,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& options, const 
     try {
       checkResumable(options.outDir, spec);
       fs::create_directories(runsDir);
-      writeAtomically(options.outDir / kSweepFile, describeSweep(spec, runs).dump(2) + "\n");
+      writeFileAtomically((options.outDir / kSweepFile).string(), describeSweep(spec, runs).dump(2) + "\n");
     } catch (...) {
       refusal = std::current_exception();
     }
@@ -86,7 +76,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& options, const 
   const std::vector<BatchRunResult> results = runBatch(batch, batchOptions, cluster);
   if (!cluster.isRoot()) return {};
 
-  writeAtomically(options.outDir / kTableFile, sweepTable(runs, results, runsDir));
+  writeFileAtomically((options.outDir / kTableFile).string(), sweepTable(runs, results, runsDir));
   SweepOutcome outcome;
   outcome.runs = runs.size();
   for (const BatchRunResult& r : results) (r.status == "completed" ? outcome.completed : outcome.failed) += 1;

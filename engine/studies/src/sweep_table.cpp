@@ -1,9 +1,10 @@
 #include "grainlab/studies/sweep_table.hpp"
 
+#include "grainlab/output_writer.hpp"
+
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 namespace grainlab::studies {
 namespace {
@@ -24,15 +25,6 @@ std::string csvCell(const std::string& text) {
   return quoted + "\"";
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
 // The last row of series.csv by column name; empty if there is none.
 std::map<std::string, std::string> lastSeriesRow(const fs::path& file) {
   std::ifstream in(file);
@@ -42,7 +34,7 @@ std::map<std::string, std::string> lastSeriesRow(const fs::path& file) {
     if (!line.empty()) last = line;
   }
   std::map<std::string, std::string> row;
-  const std::vector<std::string> names = splitCsvLine(header), cells = splitCsvLine(last);
+  const std::vector<std::string> names = splitSeriesRow(header), cells = splitSeriesRow(last);
   for (size_t k = 0; k < names.size() && k < cells.size(); ++k) row[names[k]] = cells[k];
   return row;
 }
