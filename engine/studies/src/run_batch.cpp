@@ -59,8 +59,10 @@ bool sameScene(const fs::path& dir, const nlohmann::json& scene) {
   }
 }
 
-void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pending, const BatchOptions& options,
-                BatchProgress& progress, std::vector<BatchRunResult>& results) {
+void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pending, BatchOptions options,
+                BatchProgress& progress, std::vector<BatchRunResult>& results, const Cluster& cluster) {
+  // A launcher binds each rank to a core: under `mpirun -np 1` two runs would share one.
+  if (options.jobs == 0 && cluster.joinedMpi()) options.jobs = 1;
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const size_t threads = std::min<size_t>(options.jobs == 0 ? hardware : options.jobs, pending.size());
   std::atomic<size_t> next{0};
@@ -156,7 +158,7 @@ std::vector<BatchRunResult> runBatch(const std::vector<BatchRun>& runs, const Ba
     return results;
   }
 #endif
-  runLocally(runs, pending, options, progress, results);
+  runLocally(runs, pending, options, progress, results, cluster);
   return results;
 }
 

@@ -23,6 +23,8 @@ class Cluster {
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool isRoot() const { return rank_ == 0; }
+  /// True when this process joined an MPI world (even a world of one, `mpirun -np 1`).
+  bool joinedMpi() const { return joined_; }
   /// Rank 0's word, on every rank: rank 0 passes whether the work may go on, every rank gets
   /// it back (MPI_Bcast), so no rank waits for a study that rank 0 refused.
   bool agree(bool rootSaysGo) const;

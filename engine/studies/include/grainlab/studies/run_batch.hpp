@@ -41,7 +41,7 @@ using ObserverFactory =
     std::function<std::unique_ptr<RunObserver>(const BatchRun& run, const std::filesystem::path& workDir)>;
 
 struct BatchOptions {
-  unsigned jobs = 0;                 ///< runs at once in this process; 0 = hardware threads, or 1 per rank under MPI
+  unsigned jobs = 0;                 ///< runs at once in this process; 0 = hardware threads, or 1 under MPI
   std::ostream* progress = nullptr;  ///< progress lines (written by rank 0 only); may be null
   std::string label = "batch";       ///< the progress lines' prefix, e.g. "sweep"
   ObserverFactory observer;          ///< empty = RunOutput, as `grainlab run`
