@@ -32,6 +32,28 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
   fs::rename(tmp, path);
 }
 
+nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
+  nlohmann::json s;
+  s["status"] = summary.status;
+  if (!summary.error.empty()) s["error"] = summary.error;
+  s["wall_seconds"] = summary.wallSeconds;
+  s["sample_seconds"] = summary.sampleSeconds;
+  s["steps"] = summary.steps;
+  s["particles"] = summary.particles;
+  s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;
+  if (!summary.notes.empty()) s["notes"] = summary.notes;
+  if (summary.voidRatioAfterConsolidation >= 0) s["void_ratio_after_consolidation"] = summary.voidRatioAfterConsolidation;
+  s["timestep"] = world.timestep();
+  s["critical_timestep"] = world.criticalTimestep();
+  s["particle_steps_per_second"] =
+      summary.wallSeconds > 0 ? summary.particles * static_cast<double>(summary.steps) / summary.wallSeconds : 0.0;
+  const Profile& p = world.profile();
+  s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
+                          {"neighbor_rebuilds", p.rebuilds},
+                          {"box2d_manifolds", p.box2dCalls}};
+  return s;
+}
+
 OutputWriter::OutputWriter(std::string directory, std::ostream* progress)
     : dir_(std::move(directory)), progress_(progress) {}
 
@@ -89,25 +111,7 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
   }
   writeFileAtomically((dir / "contacts_final.csv").string(), text);
 
-  nlohmann::json s;
-  s["status"] = summary.status;
-  if (!summary.error.empty()) s["error"] = summary.error;
-  s["wall_seconds"] = summary.wallSeconds;
-  s["sample_seconds"] = summary.sampleSeconds;
-  s["steps"] = summary.steps;
-  s["particles"] = summary.particles;
-  s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;
-  if (!summary.notes.empty()) s["notes"] = summary.notes;
-  if (summary.voidRatioAfterConsolidation >= 0) s["void_ratio_after_consolidation"] = summary.voidRatioAfterConsolidation;
-  s["timestep"] = world.timestep();
-  s["critical_timestep"] = world.criticalTimestep();
-  s["particle_steps_per_second"] =
-      summary.wallSeconds > 0 ? summary.particles * static_cast<double>(summary.steps) / summary.wallSeconds : 0.0;
-  const Profile& p = world.profile();
-  s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
-                          {"neighbor_rebuilds", p.rebuilds},
-                          {"box2d_manifolds", p.box2dCalls}};
-  writeFileAtomically((dir / "summary.json").string(), s.dump(2) + "\n");
+  writeFileAtomically((dir / "summary.json").string(), summaryJson(summary, world).dump(2) + "\n");
   if (progress_) {
     *progress_ << summary.status << " in " << summary.wallSeconds << " s, " << summary.steps << " steps"
                << (summary.error.empty() ? "" : ": " + summary.error) << "\n";

@@ -9,7 +9,7 @@
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
-#include "grainlab/vtk_writer.hpp"
+#include "grainlab/run_output.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab::python {
@@ -47,9 +47,7 @@ class Collector : public RunObserver {
   bool cancelRequested() override { return cancel_; }
 
   void onFinish(const RunSummary& summary, const World& world) override {
-    summary_ = summary;
-    timestep_ = world.timestep();
-    criticalTimestep_ = world.criticalTimestep();
+    summary_ = summaryJson(summary, world);
     const auto x = world.positions();
     const auto v = world.velocities();
     for (int k = 0; k < world.size(); ++k) {
@@ -85,21 +83,8 @@ class Collector : public RunObserver {
       for (py::ssize_t c = 0; c < cols; ++c) m(static_cast<py::ssize_t>(r), c) = rows_[r][static_cast<size_t>(c)];
     out["values"] = values;
 
-    // The keys of summary.json (OutputWriter).
-    py::dict s;
-    s["status"] = summary_.status;
-    if (!summary_.error.empty()) s["error"] = summary_.error;
-    s["wall_seconds"] = summary_.wallSeconds;
-    s["sample_seconds"] = summary_.sampleSeconds;
-    s["steps"] = summary_.steps;
-    s["particles"] = summary_.particles;
-    s["peak_phi_mob_deg"] = summary_.peakPhiMobDeg;
-    if (!summary_.notes.empty()) s["notes"] = summary_.notes;
-    if (summary_.voidRatioAfterConsolidation >= 0)
-      s["void_ratio_after_consolidation"] = summary_.voidRatioAfterConsolidation;
-    s["timestep"] = timestep_;
-    s["critical_timestep"] = criticalTimestep_;
-    out["summary"] = s;
+    // The keys of summary.json, as OutputWriter writes them.
+    out["summary"] = py::module_::import("json").attr("loads")(summary_.dump());
 
     py::dict p;
     p["id"] = column(id_);
@@ -141,8 +126,7 @@ class Collector : public RunObserver {
   std::optional<py::error_already_set> error_;
   std::vector<std::vector<double>> rows_;
   std::vector<std::string> stages_;
-  RunSummary summary_;
-  double timestep_ = 0, criticalTimestep_ = 0;
+  nlohmann::json summary_;  // summary.json's content
   std::vector<long long> id_;
   std::vector<std::string> shape_;
   std::vector<double> px_, py_, angle_, vx_, vy_, spin_, radius_;
@@ -155,16 +139,8 @@ class Collector : public RunObserver {
 py::dict runScene(const Scene& scene, const std::string& out, const py::object& progress) {
   Collector collector(progress);
   ObserverTee observers{&collector};
-  std::optional<OutputWriter> files;
-  std::optional<VtkWriter> vtk;
-  if (!out.empty()) {
-    files.emplace(out, nullptr);
-    observers.add(*files);
-    if (scene.output.vtk) {
-      vtk.emplace(out, scene.output.vtkEvery);
-      observers.add(*vtk);
-    }
-  }
+  std::optional<RunOutput> files;  // what `grainlab run --out` writes
+  if (!out.empty()) observers.add(files.emplace(out, scene, nullptr));
   {
     py::gil_scoped_release release;
     grainlab::runScene(scene, observers);

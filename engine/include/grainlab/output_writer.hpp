@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "grainlab/run.hpp"
 
 namespace grainlab {
@@ -28,6 +30,8 @@ class OutputWriter : public RunObserver {
 
 /// The CSV text of one series row (empty cells for values not measured).
 std::string formatSeriesRow(const Sample& sample);
+/// summary.json's content for a finished run (what OutputWriter writes).
+nlohmann::json summaryJson(const RunSummary& summary, const World& world);
 /// The header line of series.csv.
 std::string seriesHeader();
 /// One line of series.csv split into its cells (series.csv never quotes: its only text
