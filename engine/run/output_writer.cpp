@@ -50,7 +50,7 @@ nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
   const Profile& p = world.profile();
   s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
                           {"neighbor_rebuilds", p.rebuilds},
-                          {"box2d_manifolds", p.box2dCalls}};
+                          {"polygon_feature_searches", p.featureSearches}};
   return s;
 }
 

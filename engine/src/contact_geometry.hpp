@@ -36,6 +36,12 @@ struct TouchingDiscs {
   int pair = 0;
 };
 
+/// A touching pair's contact, whatever the shapes, and the pair's index in the neighbour list.
+struct TouchingShapes {
+  ContactGeometry contact;
+  int pair = 0;
+};
+
 /// Up to two manifold points (Box2D's limit) reduced as described above.
 struct ManifoldPoints {
   int count = 0;

@@ -1,90 +1,183 @@
 #pragma once
-// Polygon-polygon and polygon-disc contacts through Box2D's manifold functions
-// (b2CollidePolygons, b2CollidePolygonAndCircle), with its traps handled:
-//  - skin: b2PolygonShape carries b2_polygonRadius (0.01 units) of rounding that would
-//    inflate every overlap. We never use Box2D's depths (see below).
-//  - scale and precision: Box2D is single precision and tuned for bodies of 0.1-10 units,
-//    so shapes are scaled to about one unit, and every pair is collided in a frame centred
-//    on its first body (positions differenced in double first), so float rounding is
-//    relative to the particle size, not to the specimen's coordinates.
-//  - Set() may reorder vertices: we only use the Box2D copy for collisions.
+// Polygon-polygon and polygon-disc contacts, in double precision, for the DEM loop.
 //
-// Features from Box2D, depths in double. Box2D decides whether a pair touches and which
-// face is the reference (its separating-axis test, with its own tolerance); the clipping of
-// the incident edge against that face, the depths and the points are then done here in
-// double precision on the true polygons.
+// Two parts with different costs:
+//  - Features (polygon_features.hpp): which face is the reference, which edge is incident,
+//    or that the pair is apart. A separating-axis test over every face of both polygons;
+//    it makes Box2D's decisions without Box2D's float rounding or skin.
+//  - Measurement (here, inline): the kept features clipped and measured every step, so
+//    depths and points move continuously with the bodies.
 //
-// Reuse. Those features change only at discrete events (a face comes into contact, the
-// reference face switches), so each pair keeps them and calls Box2D again only once the pair
-// has moved, relative to itself, more than a slack; every step still clips and measures the
-// kept features afresh, so depths and points move continuously with the bodies.
-//  - Touching or nearly touching pairs: Box2D is asked with a speculative margin (faces up to
-//    kMarginUnits apart count), and its answer is kept for a relative motion up to that
-//    margin, so no contact can begin unseen.
-//  - Pairs apart: kept (as apart) while they have moved less than their gap.
-// The margin is a tenth of Box2D's own reference-face tolerance (0.1 b2_linearSlop), so a
-// feature switch delayed by the cache changes a depth by less than Box2D's own choice does.
+// Features change only at discrete events (a face comes into contact, the reference face
+// switches), so each pair keeps them with the poses they were found at, and searches again
+// only once the pair has moved, relative to itself, more than a slack:
+//  - Touching or nearly touching pairs: features are found with a speculative margin (faces up
+//    to 2 × margin apart count) and kept for a relative motion up to the margin, so no contact
+//    can begin unseen.
+//  - Pairs apart: kept while they move less than their separation beyond the margin; then
+//    the separating face found last time is tried first (a few dot products), and only if it
+//    no longer separates are all faces searched.
+// The margin is a tenth of Box2D's own reference-face tolerance, so a feature switch delayed
+// by the cache changes a depth by less than Box2D's own choice of face does.
 #include <atomic>
 #include <vector>
 
-#include <box2d/b2_polygon_shape.h>
-
 #include "contact_geometry.hpp"
+#include "polygon_features.hpp"
 
 namespace grainlab {
 
-/// Where a body is: centre and the cosine and sine of its angle (computed once per step).
-struct Pose {
-  Vec2 x;
-  double c, s;
-};
-
-/// One pair's features from its last Box2D answer, and the poses they were found at.
-struct CachedContact {
-  enum class Kind : unsigned char { None, Apart, FaceA, FaceB, VertexDisc };
-  Kind kind = Kind::None;  ///< None: nothing cached yet
-  int reference = 0;       ///< the reference face (FaceA/B) or the vertex (VertexDisc)
-  int incident = 0;        ///< the other polygon's incident edge (polygon pairs)
-  double slack = 0;        ///< m: relative motion the features tolerate
-  Vec2 offset;             ///< x_B − x_A when found
-  double ca = 1, sa = 0, cb = 1, sb = 0;  ///< both rotations when found
-};
-
 class PolygonCollider {
  public:
-  /// `lengthScale` (1/m) maps metres to Box2D units: choose it so particles are about 1 unit.
-  explicit PolygonCollider(double lengthScale) : scale_(lengthScale) {}
+  /// `lengthScale` (1/m) maps metres to the units in which Box2D's tolerances are taken:
+  /// choose it so that particles are about 1 unit.
+  explicit PolygonCollider(double lengthScale)
+      : scale_(lengthScale), tolerances_(FeatureTolerances::atScale(lengthScale)) {}
   double lengthScale() const { return scale_; }
-  /// The speculative margin in Box2D units (see above).
-  static constexpr float kMarginUnits = 0.01f * b2_linearSlop;
+  const FeatureTolerances& tolerances() const { return tolerances_; }
 
   /// Registers a polygon's body-frame geometry; returns its shape index.
   int add(const Polygon& poly);
+  const Polygon& polygon(int k) const { return polygons_[static_cast<size_t>(k)]; }
 
-  /// Contact of polygon a with polygon b; normal from a to b. With a cache, Box2D is called
-  /// only when the cached answer no longer holds; the answer is the same either way to
+  /// Contact of polygon a with polygon b; normal from a to b. With a cache, the features are
+  /// searched only when the kept ones no longer hold; the answer is the same either way to
   /// within the margin's error bound (tested).
-  ContactGeometry collidePolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact* cache = nullptr) const;
+  ContactGeometry collidePolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact* cache = nullptr) const {
+    CachedContact fresh;
+    CachedContact& k = cache ? *cache : fresh;
+    const Polygon& A = polygon(a);
+    const Polygon& B = polygon(b);
+    if (!cache || !stillHolds(k, A.circumradius, pa, B.circumradius, pb)) refreshPolygons(a, pa, b, pb, k);
+    return measurePolygons(k, a, pa, b, pb);
+  }
   /// Contact of polygon a with a disc of radius rb at xb; normal from the polygon to the disc.
   ContactGeometry collidePolygonDisc(int a, const Pose& pa, const Vec2& xb, double rb,
-                                     CachedContact* cache = nullptr) const;
+                                     CachedContact* cache = nullptr) const {
+    CachedContact fresh;
+    CachedContact& k = cache ? *cache : fresh;
+    const Pose pb{xb, 1.0, 0.0};
+    if (!cache || !stillHolds(k, polygon(a).circumradius, pa, 0.0, pb)) refreshDisc(a, pa, xb, rb, k);
+    return measureDisc(k, a, pa, xb, rb);
+  }
 
-  /// Box2D calls made so far (manifold refreshes), for the profile.
-  long long box2dCalls() const { return calls_.load(std::memory_order_relaxed); }
+  /// Full feature searches so far (the rest of the pair-steps reused their features), for
+  /// the profile.
+  long long featureSearches() const { return searches_.load(std::memory_order_relaxed); }
 
  private:
-  // Cached features measured at the given poses, without asking Box2D: polygon a with
-  // polygon b, or (b < 0) with a disc of radius rb centred at pb.x.
-  ContactGeometry evaluate(const CachedContact& cache, int a, const Pose& pa, int b, const Pose& pb, double rb) const;
-  bool stillHolds(const CachedContact& cache, double ra, const Pose& pa, double rb, const Pose& pb) const;
-  void anchor(CachedContact& cache, const Pose& pa, const Pose& pb) const;
-  // The widest gap between a and b along an edge normal of either (<= 0 if they overlap).
-  double gap(int a, const Pose& pa, int b, const Pose& pb) const;
+  // A face's span and height in its polygon's body frame: t·v1, t·v2 and n·v1, with t the
+  // face's direction (counter-clockwise) and n its outward normal.
+  struct FaceSpan {
+    double lo, hi, front;
+  };
+
+  static bool stillHolds(const CachedContact& k, double ra, const Pose& pa, double rb, const Pose& pb) {
+    if (k.kind == CachedContact::Kind::None) return false;
+    // Upper bound on how far any point of B has moved relative to A (|v|₁ ≥ |v|₂; a turn by
+    // Δθ moves a point at radius r by the chord r·|(c, s) − (c0, s0)|).
+    const Vec2 d = (pb.x - pa.x) - k.offset;
+    const double motion = std::abs(d.x()) + std::abs(d.y()) + ra * (std::abs(pa.c - k.ca) + std::abs(pa.s - k.sa)) +
+                          rb * (std::abs(pb.c - k.cb) + std::abs(pb.s - k.sb));
+    return motion < k.slack;
+  }
+  static void anchor(CachedContact& k, const Pose& pa, const Pose& pb) {
+    k.offset = pb.x - pa.x;
+    k.ca = pa.c;
+    k.sa = pa.s;
+    k.cb = pb.c;
+    k.sb = pb.s;
+  }
+  // Out of line: the rare path.
+  void refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const;
+  void refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k) const;
+
+  // The kept features measured at the given poses.
+  ContactGeometry measurePolygons(const CachedContact& k, int a, const Pose& pa, int b, const Pose& pb) const;
+  ContactGeometry measureDisc(const CachedContact& k, int a, const Pose& pa, const Vec2& xb, double rb) const;
 
   double scale_;
-  std::vector<b2PolygonShape> shapes_;
+  FeatureTolerances tolerances_;
   std::vector<Polygon> polygons_;
-  mutable std::atomic<long long> calls_{0};  // a statistic: counted, never read by the physics
+  std::vector<FaceSpan> spans_;  // kMaxPolygonVertices per polygon
+  mutable std::atomic<long long> searches_{0};  // a statistic: counted, never read by the physics
 };
+
+// Face against edge: the incident edge, in the reference polygon's frame, clipped to the
+// face's span; each end's depth below the face; reduced to one contact as reduceManifold
+// does (overlap the deeper depth, point the depth-weighted mean of the two ends' midpoints
+// between the surfaces). Box2D's clipping, in double, in about half the operations of doing
+// it in the world frame: the face's span and height are body-frame constants.
+inline ContactGeometry PolygonCollider::measurePolygons(const CachedContact& k, int a, const Pose& pa, int b,
+                                                        const Pose& pb) const {
+  using Kind = CachedContact::Kind;
+  if (k.kind != Kind::FaceA && k.kind != Kind::FaceB) return {};
+  const bool faceA = k.kind == Kind::FaceA;
+  const int r = faceA ? a : b;
+  const Polygon& R = polygon(r);
+  const Polygon& I = polygon(faceA ? b : a);
+  const Pose& pr = faceA ? pa : pb;
+  const Pose& pi = faceA ? pb : pa;
+  const FaceSpan& span = spans_[static_cast<size_t>(r) * kMaxPolygonVertices + static_cast<size_t>(k.reference)];
+  // The incident polygon seen from the reference one: u ↦ d + R u.
+  const Vec2 dx = pi.x - pr.x;
+  const double dX = pr.c * dx.x() + pr.s * dx.y(), dY = -pr.s * dx.x() + pr.c * dx.y();
+  const double c = pr.c * pi.c + pr.s * pi.s, s = pr.c * pi.s - pr.s * pi.c;
+  const Vec2& u0 = I.vertices[k.incident];
+  const Vec2& u1 = I.vertices[k.incident + 1 < I.count ? k.incident + 1 : 0];
+  const double x0 = dX + c * u0.x() - s * u0.y(), y0 = dY + s * u0.x() + c * u0.y();
+  const double x1 = dX + c * u1.x() - s * u1.y(), y1 = dY + s * u1.x() + c * u1.y();
+  const Vec2& n = R.normals[k.reference];  // t = perp(n) = (−n_y, n_x)
+  const double s0 = n.x() * y0 - n.y() * x0, s1 = n.x() * y1 - n.y() * x1;  // along the face
+  const double h0 = n.x() * x0 + n.y() * y0, h1 = n.x() * x1 + n.y() * y1;  // above its line
+  // The incident edge runs against the face (s1 < s0); if it has slid past the face's span,
+  // the features no longer touch.
+  if (!(s1 < s0) || s0 <= span.lo || s1 >= span.hi) return {};
+  // Each clipped end's depth, times the edge's extent along the face D = s0 − s1 > 0, so that
+  // one division serves both the clipping and the weighted mean.
+  const double D = s0 - s1, rise = h1 - h0;
+  const double sa = std::min(s0, span.hi), sb = std::max(s1, span.lo);
+  const double Da = D * (span.front - h0) + (sa - s0) * rise, Db = D * (span.front - h0) + (sb - s0) * rise;
+  const double wa = Da > 0 ? Da : 0, wb = Db > 0 ? Db : 0, weight = wa + wb;
+  if (weight <= 0) return {};
+  const double q = 1 / (D * weight);
+  // The point midway between the surfaces at each end is (s, front − d/2) in the face's (t, n).
+  const double ps = (wa * sa + wb * sb) * (D * q), ph = span.front - 0.5 * (wa * Da + wb * Db) * q;
+  const double lx = ps * -n.y() + ph * n.x(), ly = ps * n.x() + ph * n.y();
+  ContactGeometry g;
+  g.point = Vec2(pr.x.x() + pr.c * lx - pr.s * ly, pr.x.y() + pr.s * lx + pr.c * ly);
+  const Vec2 normal(pr.c * n.x() - pr.s * n.y(), pr.s * n.x() + pr.c * n.y());
+  g.normal = faceA ? normal : Vec2(-normal);
+  g.overlap = std::max(Da, Db) * (weight * q);
+  return g;
+}
+
+inline ContactGeometry PolygonCollider::measureDisc(const CachedContact& k, int a, const Pose& pa, const Vec2& xb,
+                                                    double rb) const {
+  using Kind = CachedContact::Kind;
+  const Polygon& A = polygon(a);
+  ContactGeometry g;
+  if (k.kind == Kind::VertexDisc) {
+    const Vec2& u = A.vertices[k.reference];
+    const Vec2 vertex(pa.x.x() + pa.c * u.x() - pa.s * u.y(), pa.x.y() + pa.s * u.x() + pa.c * u.y());
+    const Vec2 d = xb - vertex;
+    const double dist = d.norm();
+    if (dist == 0 || dist >= rb) return g;
+    g.normal = d / dist;
+    g.overlap = rb - dist;
+    g.point = vertex + (0.5 * (dist - rb)) * g.normal;
+  } else if (k.kind == Kind::FaceA) {
+    // The disc's centre below the face: depth rb − (n·(x_b − x_a) − front).
+    const FaceSpan& span = spans_[static_cast<size_t>(a) * kMaxPolygonVertices + static_cast<size_t>(k.reference)];
+    const Vec2& m = A.normals[k.reference];
+    const Vec2 n(pa.c * m.x() - pa.s * m.y(), pa.s * m.x() + pa.c * m.y());
+    const double depth = rb - (n.dot(xb - pa.x) - span.front);
+    if (depth <= 0) return g;
+    g.normal = n;
+    g.overlap = depth;
+    g.point = xb + (0.5 * depth - rb) * n;
+  }
+  return g;
+}
 
 }  // namespace grainlab

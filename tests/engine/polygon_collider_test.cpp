@@ -60,16 +60,16 @@ TEST(PolygonCollider, KeptFeaturesAgreeWithFreshOnesWithinTheSlack) {
     const double dir = 2 * kPi * unit(rng);
     double angleB = std::atan2(pb.s, pb.c) + (unit(rng) < 0.5 ? -turn : turn);
     const Pose moved = pose(pb.x + shift * Vec2(std::cos(dir), std::sin(dir)), angleB);
-    const long long before = f.collider.box2dCalls();
+    const long long before = f.collider.featureSearches();
     const ContactGeometry reused = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
-    EXPECT_EQ(f.collider.box2dCalls(), before) << "within the slack, Box2D must not be asked again";
+    EXPECT_EQ(f.collider.featureSearches(), before) << "within the slack, the features must not be searched again";
     const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
     ASSERT_GT(fresh.overlap, 0);
     ASSERT_GT(reused.overlap, 0);
     ++compared;
     // The features can differ only where Box2D would now switch faces; the depth can then
     // differ by at most Box2D's own face tolerance plus twice the motion.
-    const double tolerance = (0.1f * b2_linearSlop) / f.collider.lengthScale() + 2 * budget;
+    const double tolerance = f.collider.tolerances().referenceTolerance + 2 * budget;
     EXPECT_LE(std::abs(reused.overlap - fresh.overlap), tolerance);
     if (reused.overlap == fresh.overlap && reused.point == fresh.point && reused.normal == fresh.normal) ++identical;
   }
@@ -96,23 +96,23 @@ TEST(PolygonCollider, PairKeptApartCannotTouchWithinItsGap) {
     const Vec2 d = pa.x - pb.x;
     const Vec2 toward = d / (std::abs(d.x()) + std::abs(d.y()));
     const Pose moved = pose(pb.x + 0.999 * kept.slack * toward, std::atan2(pb.s, pb.c));
-    const long long before = f.collider.box2dCalls();
+    const long long before = f.collider.featureSearches();
     EXPECT_LE(f.collider.collidePolygons(f.a, pa, f.b, moved, &kept).overlap, 0);
-    EXPECT_EQ(f.collider.box2dCalls(), before);
+    EXPECT_EQ(f.collider.featureSearches(), before);
     EXPECT_LE(f.collider.collidePolygons(f.a, pa, f.b, moved).overlap, 0) << "a fresh answer agrees";
   }
 }
 
-TEST(PolygonCollider, MovingBeyondTheSlackAsksBox2DAgain) {
+TEST(PolygonCollider, MovingBeyondTheSlackSearchesAgain) {
   Fixture f;
   const Pose pa = pose(Vec2(0, 0), 0.0);
   const Pose pb = touching(f, pa, 0.4, 0.1, 1e-6);
   CachedContact kept;
   f.collider.collidePolygons(f.a, pa, f.b, pb, &kept);
-  const long long before = f.collider.box2dCalls();
+  const long long before = f.collider.featureSearches();
   const Pose moved = pose(pb.x + Vec2(1.01 * kept.slack, 0), 0.4);
   const ContactGeometry g = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
-  EXPECT_EQ(f.collider.box2dCalls(), before + 1);
+  EXPECT_EQ(f.collider.featureSearches(), before + 1);
   const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
   EXPECT_EQ(g.overlap, fresh.overlap);
   EXPECT_EQ(g.point, fresh.point);

@@ -7,7 +7,7 @@ struct Profile {
   double forces = 0;     ///< contact detection and contact law
   double integrate = 0;  ///< kick and drift, and the check whether the neighbour list must be rebuilt
   long long rebuilds = 0;
-  long long box2dCalls = 0;  ///< polygon manifolds asked of Box2D (the rest were reused)
+  long long featureSearches = 0;  ///< polygon feature searches (the other pair-steps reused features)
 };
 
 }  // namespace grainlab

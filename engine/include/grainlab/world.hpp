@@ -26,6 +26,7 @@ struct PairState;
 struct ContactGeometry;
 struct DiscContact;
 struct TouchingDiscs;
+struct TouchingShapes;
 struct CachedContact;
 
 struct WorldSettings {
@@ -151,7 +152,7 @@ class World {
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law);
   template <bool kDiscsOnly, class Force, class Apart>
-  void forEachTouching(int begin, int end, TouchingDiscs* scratch, Force&& force, Apart&& apart);
+  void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
   template <class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
@@ -201,7 +202,10 @@ class World {
   std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
   std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
   std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
-  std::vector<TouchingDiscs> touching_;  // discs only: scratch for the two-pass force loop
+  // Scratch for the two-pass force loop: each pair's room for its contact (one of the two,
+  // by whether the scene has polygons).
+  std::vector<TouchingDiscs> touchingDiscs_;
+  std::vector<TouchingShapes> touchingShapes_;
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
   Profile profile_;

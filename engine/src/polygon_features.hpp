@@ -1,0 +1,68 @@
+#pragma once
+// Which features of two convex polygons, or of a polygon and a disc, are in contact:
+// grainlab's own separating-axis test, in double precision.
+//
+// It takes Box2D's decisions by Box2D's rules (b2CollidePolygons and
+// b2CollidePolygonAndCircle, v2.4), so Box2D stays the reference it is tested against
+// (tests/engine/polygon_features_test.cpp), but without float rounding and without Box2D's
+// polygon skin:
+//  - a pair is in contact if no face of either polygon separates them by more than the
+//    speculative margin (`FeatureTolerances::reach`);
+//  - the reference face is A's best separating face, unless B's separates by more than
+//    `referenceTolerance` more (Box2D favours the first body's face by 0.1 b2_linearSlop);
+//  - the incident edge is the other polygon's edge most anti-parallel to the reference normal;
+//  - the incident edge, clipped to the reference face's span widened by the margin, must
+//    come within the margin of the face.
+// A disc touches a face, or (past a face's end) a vertex.
+//
+// What it returns are features, not forces: the collider (polygon_collider.hpp) measures the
+// depths and points of those features every step.
+#include "grainlab/math.hpp"
+#include "grainlab/shape.hpp"
+
+namespace grainlab {
+
+/// Where a body is: centre and the cosine and sine of its angle (computed once per step).
+struct Pose {
+  Vec2 x;
+  double c, s;
+};
+
+/// One pair's features, and the poses they were found at (so the collider can tell how far
+/// the pair has moved since).
+struct CachedContact {
+  enum class Kind : unsigned char { None, Apart, FaceA, FaceB, VertexDisc };
+  Kind kind = Kind::None;  ///< None: nothing found yet
+  bool axisOnB = false;    ///< Apart: the separating face is B's (polygon pairs)
+  int reference = 0;       ///< FaceA/B: the reference face; VertexDisc: the vertex; Apart: the separating face
+  int incident = 0;        ///< the other polygon's incident edge (polygon pairs)
+  double slack = 0;        ///< m: relative motion the features tolerate
+  Vec2 offset;             ///< x_B − x_A when found
+  double ca = 1, sa = 0, cb = 1, sb = 0;  ///< both rotations when found
+};
+
+/// Tolerances in metres: Box2D's, divided by the scale at which Box2D would see the particles.
+struct FeatureTolerances {
+  double margin;              ///< per polygon (Box2D's m_radius): a polygon pair reaches 2×, a disc rb + 1×
+  double referenceTolerance;  ///< 0.1 b2_linearSlop: how much a B face must beat A's to be the reference
+  double inside;              ///< b2_epsilon: a disc centre this close to a face counts as inside
+  /// `lengthScale` (1/m) maps metres to Box2D units; 1 unit is about a particle's radius.
+  static FeatureTolerances atScale(double lengthScale);
+};
+
+/// Features of polygon A against polygon B (normal from A to B). Fills every field of `k`
+/// except the poses (the caller anchors them). Kind::Apart carries the separating face, and a
+/// slack: how far the pair may move before it could come within the margin.
+void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
+                         const FeatureTolerances& tol, CachedContact& k);
+
+/// Features of polygon A against a disc of radius rb centred at xb.
+void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,
+                      CachedContact& k);
+
+/// An Apart polygon pair's separation along its cached separating face now (temporal
+/// coherence: a pair that stays apart is re-checked with one face instead of all of both).
+double separationAlongAxis(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
+                           const CachedContact& k);
+
+}  // namespace grainlab
