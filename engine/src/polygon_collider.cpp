@@ -24,19 +24,19 @@ void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& 
     const double reach = 2 * tolerances_.margin;
     if (const double separation = separationAlongAxis(A, pa, B, pb, k); separation > reach) {
       k.slack = separation - reach;
-      anchor(k, pa, pb);
+      anchor(k, pa, A.circumradius, pb, B.circumradius);
       return;
     }
   }
   findPolygonFeatures(A, pa, B, pb, tolerances_, k);
   searches_.fetch_add(1, std::memory_order_relaxed);
-  anchor(k, pa, pb);
+  anchor(k, pa, A.circumradius, pb, B.circumradius);
 }
 
 void PolygonCollider::refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k) const {
   findDiscFeatures(polygon(a), pa, xb, rb, tolerances_, k);
   searches_.fetch_add(1, std::memory_order_relaxed);
-  anchor(k, pa, Pose{xb, 1.0, 0.0});
+  anchor(k, pa, polygon(a).circumradius, Pose{xb, 1.0, 0.0}, 0.0);
 }
 
 }  // namespace grainlab

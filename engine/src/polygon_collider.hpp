@@ -46,9 +46,7 @@ class PolygonCollider {
   ContactGeometry collidePolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact* cache = nullptr) const {
     CachedContact fresh;
     CachedContact& k = cache ? *cache : fresh;
-    const Polygon& A = polygon(a);
-    const Polygon& B = polygon(b);
-    if (!cache || !stillHolds(k, A.circumradius, pa, B.circumradius, pb)) refreshPolygons(a, pa, b, pb, k);
+    if (!cache || !stillHolds(k, pa, pb)) refreshPolygons(a, pa, b, pb, k);
     return measurePolygons(k, a, pa, b, pb);
   }
   /// Contact of polygon a with a disc of radius rb at xb; normal from the polygon to the disc.
@@ -57,7 +55,7 @@ class PolygonCollider {
     CachedContact fresh;
     CachedContact& k = cache ? *cache : fresh;
     const Pose pb{xb, 1.0, 0.0};
-    if (!cache || !stillHolds(k, polygon(a).circumradius, pa, 0.0, pb)) refreshDisc(a, pa, xb, rb, k);
+    if (!cache || !stillHolds(k, pa, pb)) refreshDisc(a, pa, xb, rb, k);
     return measureDisc(k, a, pa, xb, rb);
   }
 
@@ -72,17 +70,12 @@ class PolygonCollider {
     double lo, hi, front;
   };
 
-  static bool stillHolds(const CachedContact& k, double ra, const Pose& pa, double rb, const Pose& pb) {
-    if (k.kind == CachedContact::Kind::None) return false;
-    // Upper bound on how far any point of B has moved relative to A (|v|₁ ≥ |v|₂; a turn by
-    // Δθ moves a point at radius r by the chord r·|(c, s) − (c0, s0)|).
-    const Vec2 d = (pb.x - pa.x) - k.offset;
-    const double motion = std::abs(d.x()) + std::abs(d.y()) + ra * (std::abs(pa.c - k.ca) + std::abs(pa.s - k.sa)) +
-                          rb * (std::abs(pb.c - k.cb) + std::abs(pb.s - k.sb));
-    return motion < k.slack;
+  static bool stillHolds(const CachedContact& k, const Pose& pa, const Pose& pb) {
+    return k.kind != CachedContact::Kind::None && relativeMotion(k, pa, pb) < k.slack;
   }
-  static void anchor(CachedContact& k, const Pose& pa, const Pose& pb) {
+  static void anchor(CachedContact& k, const Pose& pa, double ra, const Pose& pb, double rb) {
     k.offset = pb.x - pa.x;
+    k.lever = std::abs(k.offset.x()) + std::abs(k.offset.y()) + ra + rb;
     k.ca = pa.c;
     k.sa = pa.s;
     k.cb = pb.c;

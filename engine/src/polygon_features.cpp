@@ -40,15 +40,19 @@ double faceSeparation(const Polygon& ref, int e, const Vec2* w, int count) {
 }
 
 // b2FindMaxSeparation: ref's face that separates the points w most, and by how much (the
-// first of equals, as Box2D takes it).
-double maxSeparation(const Polygon& ref, const Vec2* w, int count, int& face) {
+// first of equals, as Box2D takes it); `runnerUp` receives the next best face's separation.
+double maxSeparation(const Polygon& ref, const Vec2* w, int count, int& face, double& runnerUp) {
   double best = -std::numeric_limits<double>::infinity();
+  runnerUp = best;
   face = 0;
   for (int e = 0; e < ref.count; ++e) {
     const double s = faceSeparation(ref, e, w, count);
     if (s > best) {
+      runnerUp = best;
       best = s;
       face = e;
+    } else if (s > runnerUp) {
+      runnerUp = s;
     }
   }
   return best;
@@ -89,12 +93,12 @@ void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, con
   const Frame ba = relative(pa, pb), ab = relative(pb, pa);
   Vec2 wb[kMaxPolygonVertices], wa[kMaxPolygonVertices];  // each polygon in the other's frame
   for (int v = 0; v < B.count; ++v) wb[v] = place(ba, B.vertices[v]);
-  int faceA = 0;
-  const double separationA = maxSeparation(A, wb, B.count, faceA);
+  int faceA = 0, faceB = 0;
+  double runnerUpA, runnerUpB;
+  const double separationA = maxSeparation(A, wb, B.count, faceA, runnerUpA);
   if (separationA > reach) return setApart(k, false, faceA, separationA, reach);
   for (int v = 0; v < A.count; ++v) wa[v] = place(ab, A.vertices[v]);
-  int faceB = 0;
-  const double separationB = maxSeparation(B, wa, A.count, faceB);
+  const double separationB = maxSeparation(B, wa, A.count, faceB, runnerUpB);
   if (separationB > reach) return setApart(k, true, faceB, separationB, reach);
 
   const bool onB = separationB > separationA + tol.referenceTolerance;
@@ -106,12 +110,15 @@ void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, con
   // b2FindIncidentEdge: I's face most anti-parallel to the reference normal.
   const Vec2& n = R.normals[e];
   int incident = 0;
-  double least = std::numeric_limits<double>::infinity();
+  double least = std::numeric_limits<double>::infinity(), nextLeast = least;
   for (int q = 0; q < I.count; ++q) {
     const double d = n.dot(turn(f, I.normals[q]));
     if (d < least) {
+      nextLeast = least;
       least = d;
       incident = q;
+    } else if (d < nextLeast) {
+      nextLeast = d;
     }
   }
   // Box2D's clipping: the incident edge cut to the face's sides widened by the reach; some
@@ -130,7 +137,17 @@ void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, con
   k.kind = onB ? CachedContact::Kind::FaceB : CachedContact::Kind::FaceA;
   k.reference = e;
   k.incident = incident;
-  k.slack = tol.margin;
+  // While the pair moves by m (relativeMotion), every separation moves by at most m, and a
+  // dot product of the two bodies' normals by at most the turn, m / lever. So a fresh search
+  // answers the same while m stays below each decision's margin (halved where the decision
+  // compares two moving values). Decisions tied closer than the speculative margin are kept
+  // for that margin: a delayed switch then changes a depth by less than Box2D's own choice.
+  const double lever = std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + A.circumradius + B.circumradius;
+  const double bestFace = 0.5 * ((onB ? separationB - runnerUpB : separationA - runnerUpA));
+  const double reference = 0.5 * std::abs(separationB - separationA - tol.referenceTolerance);
+  const double inReach = reach - std::max(separationA, separationB);
+  const double incidentEdge = 0.5 * (nextLeast - least) * lever;
+  k.slack = std::max(tol.margin, std::min({bestFace, reference, inReach, incidentEdge}));
 }
 
 void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,

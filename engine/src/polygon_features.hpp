@@ -17,6 +17,8 @@
 //
 // What it returns are features, not forces: the collider (polygon_collider.hpp) measures the
 // depths and points of those features every step.
+#include <cmath>
+
 #include "grainlab/math.hpp"
 #include "grainlab/shape.hpp"
 
@@ -37,6 +39,7 @@ struct CachedContact {
   int reference = 0;       ///< FaceA/B: the reference face; VertexDisc: the vertex; Apart: the separating face
   int incident = 0;        ///< the other polygon's incident edge (polygon pairs)
   double slack = 0;        ///< m: relative motion the features tolerate
+  double lever = 0;        ///< m: |x_B − x_A|₁ + r_A + r_B when found (how far a turn moves a point)
   Vec2 offset;             ///< x_B − x_A when found
   double ca = 1, sa = 0, cb = 1, sb = 0;  ///< both rotations when found
 };
@@ -50,9 +53,23 @@ struct FeatureTolerances {
   static FeatureTolerances atScale(double lengthScale);
 };
 
+/// How far the pair has moved relative to itself since its features were found (the poses in
+/// `k`): an upper bound on how far any point of either body has moved in the other's frame,
+/// |Δ(x_B − x_A)| plus each turn's chord |Δ(c, s)| times the lever (L1 norms bound L2 ones).
+inline double relativeMotion(const CachedContact& k, const Pose& pa, const Pose& pb) {
+  const Vec2 d = (pb.x - pa.x) - k.offset;
+  const double shift = std::abs(d.x()) + std::abs(d.y());
+  const double turn = std::abs(pa.c - k.ca) + std::abs(pa.s - k.sa) + std::abs(pb.c - k.cb) + std::abs(pb.s - k.sb);
+  return shift + (k.lever + shift) * turn;
+}
+
 /// Features of polygon A against polygon B (normal from A to B). Fills every field of `k`
-/// except the poses (the caller anchors them). Kind::Apart carries the separating face, and a
-/// slack: how far the pair may move before it could come within the margin.
+/// except the poses (the caller anchors them), with a slack: how far the pair may move
+/// (relativeMotion) before a fresh search could answer otherwise. For a pair apart, that is
+/// its separation beyond the margin. For a contact, it is the smallest of the margins by which
+/// each decision was taken (best face against the runner-up, A's face against B's, in reach
+/// or not, which edge is incident), halved where both sides of a decision move; at least the
+/// speculative margin, where Box2D's own tolerance takes over.
 void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                          const FeatureTolerances& tol, CachedContact& k);
 

@@ -41,11 +41,30 @@ Pose touching(Fixture& f, const Pose& pa, double angleB, double direction, doubl
   return pose(pa.x + (lo - overlap) * u, angleB);
 }
 
+// B moved from pb by a random translation and turn, scaled so that the pair's motion
+// (relativeMotion, which the cache uses) is `fraction` of the kept slack.
+Pose movedWithin(const CachedContact& kept, const Pose& pa, const Pose& pb, double fraction, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double dir = 2 * kPi * unit(rng), share = unit(rng), sign = unit(rng) < 0.5 ? -1 : 1;
+  const double angle = std::atan2(pb.s, pb.c);
+  auto at = [&](double scale) {
+    // A turn of 1 rad and a shift of one lever, mixed by `share`, times `scale`.
+    return pose(pb.x + scale * (1 - share) * kept.lever * Vec2(std::cos(dir), std::sin(dir)),
+                angle + sign * scale * share);
+  };
+  double lo = 0, hi = 1;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (relativeMotion(kept, pa, at(mid)) < fraction * kept.slack ? lo : hi) = mid;
+  }
+  return at(lo);
+}
+
 TEST(PolygonCollider, KeptFeaturesAgreeWithFreshOnesWithinTheSlack) {
   Fixture f;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int compared = 0, identical = 0;
+  int compared = 0, identical = 0, decided = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Pose pa = pose(Vec2(0.1, -0.05), 2 * kPi * unit(rng));
     const double overlap = 1e-6 * (0.5 + 9.5 * unit(rng));  // 1e-4 .. 2e-3 of the size
@@ -53,28 +72,30 @@ TEST(PolygonCollider, KeptFeaturesAgreeWithFreshOnesWithinTheSlack) {
     CachedContact kept;
     const ContactGeometry first = f.collider.collidePolygons(f.a, pa, f.b, pb, &kept);
     ASSERT_GT(first.overlap, 0);
-    // Move B relative to A by less than the slack: translation and turn share the budget.
-    const double budget = 0.99 * kept.slack, share = unit(rng);
-    const double turn = budget * share / f.B.circumradius / 2;  // chord ≤ |Δθ| r, L1 ≤ 2× that
-    const double shift = budget * (1 - share) / 2;
-    const double dir = 2 * kPi * unit(rng);
-    double angleB = std::atan2(pb.s, pb.c) + (unit(rng) < 0.5 ? -turn : turn);
-    const Pose moved = pose(pb.x + shift * Vec2(std::cos(dir), std::sin(dir)), angleB);
+    const Pose moved = movedWithin(kept, pa, pb, 0.99, rng);
     const long long before = f.collider.featureSearches();
     const ContactGeometry reused = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
     EXPECT_EQ(f.collider.featureSearches(), before) << "within the slack, the features must not be searched again";
     const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
-    ASSERT_GT(fresh.overlap, 0);
-    ASSERT_GT(reused.overlap, 0);
+    const bool same = reused.overlap == fresh.overlap && reused.point == fresh.point && reused.normal == fresh.normal;
+    if (kept.slack > f.collider.tolerances().margin) {
+      // The slack came from the decisions' own margins: a fresh search must decide the same.
+      ++decided;
+      EXPECT_TRUE(same) << "trial " << trial << ": kept " << reused.overlap << ", fresh " << fresh.overlap;
+      continue;
+    }
+    // Decisions tied within the speculative margin: the features can differ only where a
+    // fresh search would now switch faces; the depth then differs by at most Box2D's own face
+    // tolerance plus twice the motion.
     ++compared;
-    // The features can differ only where Box2D would now switch faces; the depth can then
-    // differ by at most Box2D's own face tolerance plus twice the motion.
-    const double tolerance = f.collider.tolerances().referenceTolerance + 2 * budget;
-    EXPECT_LE(std::abs(reused.overlap - fresh.overlap), tolerance);
-    if (reused.overlap == fresh.overlap && reused.point == fresh.point && reused.normal == fresh.normal) ++identical;
+    const double tolerance = f.collider.tolerances().referenceTolerance + 2 * kept.slack;
+    EXPECT_LE(std::abs(std::max(reused.overlap, 0.0) - std::max(fresh.overlap, 0.0)), tolerance);
+    identical += same;
   }
-  // Feature switches are rare events: nearly every reuse is the fresh answer, bit for bit.
-  EXPECT_GT(identical, 0.98 * compared);
+  // Most contacts are decided by margins wider than the speculative one, and among the rest
+  // feature switches are rare events.
+  EXPECT_GT(decided, 1000);
+  EXPECT_GE(identical, 0.98 * compared);
 }
 
 TEST(PolygonCollider, PairKeptApartCannotTouchWithinItsGap) {
