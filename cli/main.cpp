@@ -27,6 +27,7 @@ int usage(std::ostream& out, int code) {
          "  run SCENE.json --out DIR     run a scene headless (progress on stderr)\n"
          "  run --preset NAME --out DIR  run a preset\n"
          "      [--vtk]                  also write ParaView frames to DIR/vtk (output.vtk)\n"
+         "      [--force]                run even if the estimate says it takes more than 30 days\n"
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
@@ -47,10 +48,11 @@ int usage(std::ostream& out, int code) {
 
 int runCommand(const std::vector<std::string>& args) {
   std::string scenePath, preset, out;
-  bool vtk = false;
+  bool vtk = false, force = false;
   for (size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--out" && k + 1 < args.size()) out = args[++k];
     else if (args[k] == "--vtk") vtk = true;
+    else if (args[k] == "--force") force = true;
     else if (args[k] == "--preset" && k + 1 < args.size()) preset = args[++k];
     else if (!args[k].empty() && args[k][0] != '-' && scenePath.empty()) scenePath = args[k];
     else {
@@ -72,7 +74,15 @@ int runCommand(const std::vector<std::string>& args) {
   }
   if (vtk) scene.output.vtk = true;
   grainlab::RunOutput output(out, scene, &std::cerr);
-  const grainlab::RunSummary summary = grainlab::runScene(scene, output);
+  // A run estimated to take longer than this is refused unless --force: it is a typo (a
+  // stiffness of 1e30, a strain rate of 1e-12) far more often than a plan.
+  grainlab::RunLimits limits;
+  if (!force) limits.maxSeconds = 30 * 86400.0;
+  const grainlab::RunSummary summary = grainlab::runScene(scene, output, limits);
+  if (summary.refused) {
+    std::cerr << "error: " << summary.error << " (grainlab run --force runs it anyway)\n";
+    return 2;
+  }
   if (const grainlab::VtkWriter* vtkWriter = output.vtk()) {
     std::cerr << "vtk: " << vtkWriter->frames() << " frames, " << vtkWriter->bytesWritten() / 1e6 << " MB in "
               << vtkWriter->writeSeconds() << " s (" << 100 * vtkWriter->writeSeconds() / summary.wallSeconds

@@ -57,7 +57,12 @@ nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
 OutputWriter::OutputWriter(std::string directory, std::ostream* progress)
     : dir_(std::move(directory)), progress_(progress) {}
 
+void OutputWriter::onEstimate(const RunCost& cost) {
+  if (progress_) *progress_ << "estimate: " << cost.describe() << "\n";
+}
+
 void OutputWriter::onStart(const Scene&, const World&) {
+  started_ = std::chrono::steady_clock::now();
   fs::create_directories(dir_);
   series_.open(fs::path(dir_) / "series.csv", std::ios::binary | std::ios::trunc);
   if (!series_) throw std::runtime_error("cannot write " + dir_ + "/series.csv");
@@ -74,8 +79,11 @@ void OutputWriter::onProgress(double fraction, std::string_view stage, const Wor
   const int percent = static_cast<int>(std::floor(fraction * 100));
   if (percent == lastPercent_) return;
   lastPercent_ = percent;
-  *progress_ << "[" << percent << "%] " << stage << "  step " << world.stepCount() << "  t = " << world.time()
-             << " s\n";
+  *progress_ << "[" << percent << "%] " << stage << "  step " << world.stepCount() << "  t = " << world.time() << " s";
+  // Time left, from the pace so far (progress is by stage criteria, so it is an estimate).
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (fraction > 0.02 && fraction < 1 && elapsed > 2) *progress_ << "  about " << humanDuration(elapsed * (1 - fraction) / fraction) << " left";
+  *progress_ << "\n";
   progress_->flush();
 }
 

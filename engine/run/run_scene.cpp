@@ -37,7 +37,7 @@ bool notePackingTimestep(const World& world, RunSummary& summary) {
 
 }  // namespace
 
-RunSummary runScene(const Scene& scene, RunObserver& observer) {
+RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits) {
   const auto start = Clock::now();
   RunSummary summary;
   std::unique_ptr<RunContext> context;
@@ -50,6 +50,19 @@ RunSummary runScene(const Scene& scene, RunObserver& observer) {
   }
   World& world = context->world();
   summary.particles = world.size();
+  const RunCost cost = estimateRunCost(scene, world);
+  observer.onEstimate(cost);
+  if (cost.certainSeconds() > limits.maxSeconds) {
+    std::ostringstream os;
+    os << cost.field << ": the run would take about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()
+       << "), more than the limit of " << humanDuration(limits.maxSeconds) << "; change " << cost.field
+       << ", or raise the limit if you mean it";
+    summary.status = "failed";
+    summary.refused = true;
+    summary.error = os.str();
+    summary.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return summary;
+  }
   observer.onStart(scene, world);
   try {
     const double totalWork = context->totalWork();

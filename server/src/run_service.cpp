@@ -93,7 +93,8 @@ RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& opt
     : repo_(repo),
       hub_(hub),
       options_(options),
-      run_(options.runFunction ? options.runFunction : RunFunction(&grainlab::runScene)),
+      run_(options.runFunction ? options.runFunction
+                               : RunFunction([](const Scene& s, RunObserver& o) { return grainlab::runScene(s, o); })),
       manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
       startedAt_(unixNow()) {}
 

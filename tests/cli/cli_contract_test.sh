@@ -43,4 +43,18 @@ grep -q 'particles\[0\].radius' "$tmp/err.txt" || fail "error does not name the 
 [[ ! -e "$tmp/bad-out" ]] || fail "a bad scene wrote to its output directory"
 if "$grainlab" run --preset nope --out "$tmp/nope" 2> "$tmp/err2.txt"; then fail "unknown preset accepted"; fi
 grep -q '^error: preset' "$tmp/err2.txt" || fail "unknown preset message"
+# An absurd cost (a stiffness of 1e30 N/m: a timestep of ~1e-17 s) is refused before the first
+# step: exit 2, the field named with the figures, nothing written. --force would run it.
+"$grainlab" preset circular-quick | python3 -c '
+import json, sys
+s = json.load(sys.stdin)
+s["material"]["normal_stiffness"] = s["material"]["tangential_stiffness"] = 1e30
+print(json.dumps(s))' > "$tmp/stiff.json"
+status=0
+"$grainlab" run "$tmp/stiff.json" --out "$tmp/stiff-out" 2> "$tmp/err3.txt" || status=$?
+[[ $status -eq 2 ]] || fail "an absurd cost exited $status, not 2: $(cat "$tmp/err3.txt")"
+grep -q '^error: material.normal_stiffness: .*years' "$tmp/err3.txt" || fail "refusal message: $(cat "$tmp/err3.txt")"
+[[ ! -e "$tmp/stiff-out" ]] || fail "a refused run wrote to its output directory"
+# The first progress line of a normal run is its estimate.
+grep -q '^estimate: timestep' "$tmp/progress.txt" || fail "no estimate line: $(head -2 "$tmp/progress.txt")"
 echo "cli contract: all checks passed"

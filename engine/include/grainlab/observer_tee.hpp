@@ -14,6 +14,9 @@ class ObserverTee : public RunObserver {
   ObserverTee(std::initializer_list<RunObserver*> observers) : observers_(observers) {}
   void add(RunObserver& observer) { observers_.push_back(&observer); }
 
+  void onEstimate(const RunCost& cost) override {
+    for (RunObserver* o : observers_) o->onEstimate(cost);
+  }
   void onStart(const Scene& scene, const World& world) override {
     for (RunObserver* o : observers_) o->onStart(scene, world);
   }

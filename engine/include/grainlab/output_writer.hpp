@@ -2,6 +2,7 @@
 // Writes a run's output directory (contracts.md): series.csv as the run goes, then
 // particles_final.csv, contacts_final.csv and summary.json at the end. Each final file is
 // written to a temporary name and renamed, so a reader never sees half a file.
+#include <chrono>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ class OutputWriter : public RunObserver {
  public:
   /// Creates `directory` if needed. `progress` (may be null) receives a progress line now and then.
   OutputWriter(std::string directory, std::ostream* progress);
+  void onEstimate(const RunCost&) override;
   void onStart(const Scene&, const World&) override;
   void onSample(const Sample&, const World&) override;
   void onProgress(double fraction, std::string_view stage, const World&) override;
@@ -26,6 +28,7 @@ class OutputWriter : public RunObserver {
   std::ostream* progress_;
   std::ofstream series_;
   int lastPercent_ = -1;
+  std::chrono::steady_clock::time_point started_;  // for the time left
 };
 
 /// The CSV text of one series row (empty cells for values not measured).

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "grainlab/run_cost.hpp"
 #include "grainlab/scene.hpp"
 
 namespace grainlab {
@@ -29,6 +30,7 @@ struct Sample {
 struct RunSummary {
   std::string status = "completed";   ///< completed | failed | cancelled
   std::string error;                  ///< why it failed
+  bool refused = false;               ///< failed before its first step: its cost is over the limit
   double wallSeconds = 0;
   double sampleSeconds = 0;           ///< of wallSeconds, spent measuring samples (analysis)
   std::int64_t steps = 0;
@@ -41,6 +43,9 @@ struct RunSummary {
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
+  /// Once the world is built and its cost estimated, before onStart (and instead of it when
+  /// the run is refused for its cost).
+  virtual void onEstimate(const RunCost&) {}
   /// Once the world is built, before the first step.
   virtual void onStart(const Scene&, const World&) {}
   /// At every sample; the world is in the state the sample describes.
@@ -53,7 +58,10 @@ class RunObserver {
   virtual void onFinish(const RunSummary&, const World&) {}
 };
 
-/// Never throws for a failing simulation: the summary says failed and why.
-RunSummary runScene(const Scene& scene, RunObserver& observer);
+/// Never throws for a failing simulation: the summary says failed and why. A run certain to
+/// take longer than `limits.maxSeconds` (RunCost::certainSeconds) is refused before its first
+/// step: the summary says failed, names the field that drives the cost and gives the figures,
+/// and the observer sees only onEstimate (nothing is written).
+RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits = {});
 
 }  // namespace grainlab

@@ -20,6 +20,7 @@ class ProgressRelay : public RunObserver {
  public:
   ProgressRelay(RunObserver& inner, BatchProgress& progress, const std::string& id)
       : inner_(inner), progress_(progress), id_(id) {}
+  void onEstimate(const RunCost& c) override { inner_.onEstimate(c); }
   void onStart(const Scene& s, const World& w) override { inner_.onStart(s, w); }
   void onSample(const Sample& s, const World& w) override { inner_.onSample(s, w); }
   void onProgress(double fraction, std::string_view stage, const World& w) override {

@@ -1,0 +1,44 @@
+#pragma once
+// What a run will cost, estimated before its first step, so that a scene whose cost is absurd
+// (a stiffness of 1e30 N/m makes the timestep 1e-17 s) is refused with the field that drives
+// it, instead of sitting at 0 % for ever.
+#include <limits>
+#include <string>
+
+#include "grainlab/scene.hpp"
+
+namespace grainlab {
+
+class World;
+
+struct RunCost {
+  /// s of simulated time: free stages' durations and biaxial stages' target strain over their
+  /// rate (capped at their time limit). A run takes at least this long.
+  double certainTime = 0;
+  /// s of simulated time of the stages that end on a criterion (compaction, consolidation),
+  /// counted to their time limit: the run takes at most certainTime plus this.
+  double boundedTime = 0;
+  double timestep = 0;                ///< s
+  int particles = 0;
+  double particleStepsPerSecond = 0;  ///< the speed assumed for this kind of scene, one thread
+  /// The scene field that drives the cost ("material.normal_stiffness", "stages.2.strain_rate"...).
+  std::string field;
+  double certainSteps() const { return certainTime / timestep; }
+  double certainSeconds() const { return certainSteps() * particles / particleStepsPerSecond; }
+  double mostSeconds() const { return (certainTime + boundedTime) / timestep * particles / particleStepsPerSecond; }
+  /// One line for people: the steps, the timestep and the estimated wall time.
+  std::string describe() const;
+};
+
+/// The cost of running `scene` on `world` (built from it, not yet stepped).
+RunCost estimateRunCost(const Scene& scene, const World& world);
+
+/// A wall time in words: "40 s", "3.2 h", "3e+08 years".
+std::string humanDuration(double seconds);
+
+/// How long a run may be expected to take before it is refused (runScene's `limits`).
+struct RunLimits {
+  double maxSeconds = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace grainlab
