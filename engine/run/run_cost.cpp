@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "grainlab/world.hpp"
+#include "run_context.hpp"
 
 namespace grainlab {
 namespace {
@@ -73,6 +74,11 @@ RunCost estimateRunCost(const Scene& scene, const World& world) {
     cost.field = longestField;
   }
   return cost;
+}
+
+RunCost estimateSceneCost(const Scene& scene) {
+  RunContext context(scene);
+  return estimateRunCost(scene, context.world());
 }
 
 std::string humanDuration(double seconds) {

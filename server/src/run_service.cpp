@@ -140,6 +140,22 @@ std::int64_t RunService::create(const std::string& body) {
                    "this server runs at most " + std::to_string(options_.maxParticles) +
                        " particles per run; the scene has about " + std::to_string(particles),
                    "particles");
+  // A scene whose cost is absurd (a stiffness of 1e30 N/m steps at 1e-17 s) would hold a run
+  // slot at 0 % for ever: refuse it now, naming the field that drives the cost.
+  RunCost cost;
+  try {
+    cost = estimateSceneCost(scene);
+  } catch (const SceneError& e) {
+    throw ApiError(400, e.reason(), e.field());
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what(), "(scene)");
+  }
+  if (cost.certainSeconds() > options_.maxRunSeconds)
+    throw ApiError(400,
+                   "the run would take about " + humanDuration(cost.certainSeconds()) + " (" + cost.describe() +
+                       "), more than this server's limit of " + humanDuration(options_.maxRunSeconds) +
+                       " (grainlab serve --max-run-seconds)",
+                   cost.field);
   if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
       manager_.running() >= manager_.maxConcurrent())
     throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
@@ -471,7 +487,8 @@ nlohmann::json RunService::health() {
             {"max_concurrent", manager_.maxConcurrent()},
             {"max_queued", options_.maxQueuedRuns}}},
           {"watchers", hub_.subscribers()},
-          {"limits", {{"max_particles", options_.maxParticles}, {"max_body_bytes", options_.maxBodyBytes}}}};
+          {"limits", {{"max_particles", options_.maxParticles}, {"max_body_bytes", options_.maxBodyBytes},
+                      {"max_run_seconds", options_.maxRunSeconds}}}};
 }
 
 void RunService::shutdown() {

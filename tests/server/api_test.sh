@@ -107,6 +107,9 @@ req POST /api/runs --data '{"name":"x","colour":"red","particles":[{"shape":"dis
 expect "unknown key: 400" 400 '"field":"colour"'
 req POST /api/runs --data '{"preset":"no-such"}'
 expect "unknown preset: 400" 400 '"field":"preset"'
+# A stiffness of 1e30 N/m steps at ~1e-17 s: a second of it would hold a run slot for ever.
+req POST /api/runs --data '{"name":"stiff","material":{"normal_stiffness":1e30,"tangential_stiffness":1e30},"particles":[{"shape":"disc","radius":0.002,"position":[0,0]}],"stages":[{"type":"free","duration":1}]}'
+expect "absurd cost: 400 names the field that drives it" 400 '"error":"the run would take about [^"]*years[^"]*","field":"material\.normal_stiffness"'
 req POST /api/runs --data '{"preset":"circular-quick"}'
 expect "past the particle limit: 503" 503 '"error":"this server runs at most 100 particles per run[^"]*","field":"particles"'
 head -c 200000 /dev/zero | tr '\0' ' ' >"$TMP_ROOT/big.json"

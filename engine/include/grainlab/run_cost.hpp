@@ -32,6 +32,9 @@ struct RunCost {
 
 /// The cost of running `scene` on `world` (built from it, not yet stepped).
 RunCost estimateRunCost(const Scene& scene, const World& world);
+/// The same, building the world first (the specimen is generated and its first forces
+/// computed: milliseconds for a few thousand particles). Throws as runScene's set-up fails.
+RunCost estimateSceneCost(const Scene& scene);
 
 /// A wall time in words: "40 s", "3.2 h", "3e+08 years".
 std::string humanDuration(double seconds);

@@ -21,6 +21,9 @@ struct ServeOptions {
   int maxConcurrentRuns = 0;            ///< runs simulated at once; 0 = the machine's cores
   int maxQueuedRuns = 64;               ///< runs waiting beyond that; more get 429
   int maxParticles = 50000;             ///< per run (explicit plus generated); more get 503
+  /// A scene estimated to run longer than this (s, RunCost::certainSeconds) gets 400 naming
+  /// the field that drives its cost.
+  double maxRunSeconds = 24 * 3600.0;
   std::size_t maxBodyBytes = 8u << 20;  ///< request body limit; larger bodies get 413
   int ioThreads = 2;                    ///< threads serving HTTP and WebSocket I/O
   double framesPerSecond = 20;          ///< live particle frames per run, at most
