@@ -58,6 +58,8 @@ constexpr const char* kMigrations[] = {
     )sql",
     // 1 -> 2: the simulation thread's CPU time, beside its wall time.
     "ALTER TABLE runs ADD COLUMN cpu_seconds REAL;",
+    // 2 -> 3: the wall time the run was estimated to need when it was queued.
+    "ALTER TABLE runs ADD COLUMN estimated_seconds REAL;",
 };
 
 // Every statement the server runs, by name.
@@ -65,10 +67,11 @@ namespace sql {
 // The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
 constexpr const char* kListRuns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds FROM runs ORDER BY id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds FROM runs "
+    "ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds FROM runs "
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds FROM runs "
     "WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
@@ -86,8 +89,8 @@ constexpr const char* kLastFrame =
 constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shapes IS NOT NULL";
 
 constexpr const char* kInsertRun =
-    "INSERT INTO runs (name, preset, scene, status, particles, created_at) "
-    "VALUES (:name, :preset, :scene, :status, :particles, :created_at)";
+    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds) "
+    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds)";
 constexpr const char* kMarkStarted =
     "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
 constexpr const char* kUpdateProgress =
@@ -145,6 +148,7 @@ RunRecord readRun(StatementUse& use) {
   r.wallSeconds = optionalAt(use, 13);
   r.peakPhiMobDeg = optionalAt(use, 14);
   r.cpuSeconds = optionalAt(use, 15);
+  r.estimatedSeconds = optionalAt(use, 16);
   return r;
 }
 
@@ -398,6 +402,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
           .bindText(":status", run.status)
           .bind(":particles", run.particles)
           .bind(":created_at", run.createdAt);
+      bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
       use.run();
       id = w.db.lastInsertId();
     } catch (...) {

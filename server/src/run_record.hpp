@@ -34,6 +34,9 @@ struct RunRecord {
   std::optional<double> startedAt, finishedAt;
   std::optional<double> wallSeconds;    ///< the simulation's own wall time
   std::optional<double> cpuSeconds;     ///< CPU time of the thread that ran it (see run_service)
+  /// The wall time it needs at least, estimated when queued (RunCost::certainSeconds: the
+  /// free and shearing stages; compaction and consolidation end on criteria and add to it).
+  std::optional<double> estimatedSeconds;
   std::optional<double> peakPhiMobDeg;
 };
 

@@ -165,6 +165,7 @@ std::int64_t RunService::create(const std::string& body) {
   record.scene = sceneJson.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   record.status = status::kQueued;
   record.particles = particles;
+  record.estimatedSeconds = cost.certainSeconds();
   record.createdAt = unixNow();
   const std::int64_t id = repo_.insertRun(record).get();
 
@@ -323,6 +324,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
                                          : nlohmann::json(nullptr)},
       {"wall_seconds", orNull(merged.wallSeconds)},
       {"cpu_seconds", orNull(merged.cpuSeconds)},
+      {"estimated_seconds", orNull(merged.estimatedSeconds)},
       {"peak_phi_mob_deg", orNull(merged.peakPhiMobDeg)},
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
   };

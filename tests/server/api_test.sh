@@ -35,6 +35,7 @@ expect "the list has it" 200 "\"id\":$ID"
 check "tiny run completes" wait_status "$ID" completed 60
 req GET "/api/runs/$ID"
 expect "run detail" 200 '"progress":1(\.0)?,'
+check "detail has the estimate it was queued with" test "$(json 'typeof b.estimated_seconds')" = number
 check "detail has name, times, wall time, scene" test "$(json '[b.name, typeof b.created_at, typeof b.finished_at, typeof b.wall_seconds, b.scene.name].join()')" = "tiny,string,string,number,tiny"
 req HEAD "/api/runs/$ID"
 check "HEAD gives the headers (Content-Length $(header Content-Length)) without the body" \

@@ -151,9 +151,10 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     repo.flush().get();
   }
   {
-    // What a version-1 database looked like: no cpu_seconds column.
+    // What a version-1 database looked like: no cpu_seconds nor estimated_seconds column.
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
+    db.exec("ALTER TABLE runs DROP COLUMN estimated_seconds; ALTER TABLE runs DROP COLUMN cpu_seconds; "
+            "PRAGMA user_version = 1;");
   }
   Repository repo(path);
   auto run = repo.findRun(id);
@@ -161,6 +162,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_EQ(run->name, "old");
   EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
   EXPECT_FALSE(run->cpuSeconds);
+  EXPECT_FALSE(run->estimatedSeconds);
   Database db(path, false);
   EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
 }
