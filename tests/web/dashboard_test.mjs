@@ -67,6 +67,8 @@ try {
 
   const completed = await waitUntil(async () => (await page.locator('.run-header .status').getAttribute('data-status')) === 'completed', 180);
   check('the run completes and the header says so', Boolean(completed));
+  const facts = await page.locator('.run-header .facts').textContent();
+  check('the header shows the estimate the run was queued with', /estimated ≥ \S+/.test(facts), facts);
   const replayReady = await waitUntil(() => page.$eval('.replay-bar input[type=range]', (s) => !s.disabled), 30);
   check('the replay slider is enabled once the run has ended', Boolean(replayReady));
 

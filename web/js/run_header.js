@@ -1,6 +1,7 @@
 // The run view's header: name, status, progress, facts (stage, preset, particles, timing,
-// peak φ_mob) and the actions. Built once and updated in place every second while the run
-// is live, so a click on Cancel is never lost to a re-render.
+// the estimate the run was queued with, peak φ_mob) and the actions. Built once and updated
+// in place every second while the run is live, so a click on Cancel is never lost to a
+// re-render.
 import { api } from './api.js';
 import { h } from './dom.js';
 import { TERMINAL_STATUSES, duration, localTime, percent, sig } from './format.js';
@@ -39,6 +40,8 @@ export class RunHeader {
     } else if (run.wall_seconds !== null && run.wall_seconds !== undefined) {
       timing = `took ${duration(run.wall_seconds)}`;
     }
+    // The server's estimate when the run was queued: a lower bound (criterion stages add to it).
+    const estimate = run.estimated_seconds != null ? `estimated ≥ ${duration(run.estimated_seconds)}` : null;
     this.title.textContent = `#${run.id} ${run.name}`;
     this.status.className = `status ${status}`;
     this.status.dataset.status = status;
@@ -51,6 +54,7 @@ export class RunHeader {
       `${run.particles} particles`,
       `created ${localTime(run.created_at)}`,
       timing,
+      estimate,
       run.peak_phi_mob_deg !== null ? `peak φ_mob ${sig(run.peak_phi_mob_deg, 3)}°` : null,
     ].filter(Boolean).join(' · ');
     this.cancel.hidden = !running;
