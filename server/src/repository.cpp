@@ -114,10 +114,11 @@ constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
 constexpr const char* kDeleteSamples = "DELETE FROM samples WHERE run_id = :id";
 constexpr const char* kDeleteHistograms = "DELETE FROM histograms WHERE run_id = :id";
 constexpr const char* kDeleteFrames = "DELETE FROM frames WHERE run_id = :id";
+// Only runs that were running: a queued run is queued again by the server (RunService).
 constexpr const char* kInterruptUnfinished =
     "UPDATE runs SET status = 'interrupted', "
     "error = 'the server stopped before the run ended' "
-    "WHERE status IN ('queued', 'running')";
+    "WHERE status = 'running'";
 }  // namespace sql
 
 void bindOptional(StatementUse& use, const char* name, const std::optional<double>& value) {

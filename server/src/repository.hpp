@@ -40,8 +40,8 @@ class Repository {
   /// must not touch runs a live server may be running.
   enum class Opener { Server, Tool };
   /// Opens or creates the file (and its parent directory) and applies the migrations. The
-  /// server also marks every run that was queued or running as interrupted: no process is
-  /// running it now.
+  /// server also marks every run that was running as interrupted: no process is running it
+  /// now. Queued runs stay queued: the server queues them again (RunService).
   explicit Repository(const std::string& path, Opener opener = Opener::Server);
   /// Commits what is queued, then closes.
   ~Repository();

@@ -96,7 +96,45 @@ RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& opt
       run_(options.runFunction ? options.runFunction
                                : RunFunction([](const Scene& s, RunObserver& o) { return grainlab::runScene(s, o); })),
       manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
-      startedAt_(unixNow()) {}
+      startedAt_(unixNow()) {
+  requeueStored();
+}
+
+void RunService::requeueStored() {
+  for (const RunRecord& listed : repo_.listRuns()) {
+    if (listed.status != status::kQueued) continue;
+    RunEnd end;
+    end.status = status::kInterrupted;
+    end.finishedAt = unixNow();
+    try {
+      const auto record = repo_.findRun(listed.id);  // the list leaves the scenes out
+      Scene scene = parseScene(nlohmann::json::parse(record->scene));
+      const auto submitted = enqueue(listed.id, listed.particles, std::move(scene));
+      if (submitted == RunManager::Submit::Started || submitted == RunManager::Submit::Queued) continue;
+      end.error = "the run queue was full when the server restarted";
+    } catch (const std::exception& e) {
+      end.error = std::string("its stored scene could not be queued again: ") + e.what();
+    }
+    repo_.finishRun(listed.id, end, nullptr);
+  }
+}
+
+RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene scene) {
+  auto run = std::make_shared<LiveRun>(id);
+  run->update([&](LiveRun::State& s) { s.particles = particles; });
+  {
+    std::lock_guard lock(liveMutex_);
+    live_[id] = run;
+  }
+  hub_.open(id);
+  hub_.publish(id, makeOutgoing(statusMessage(id, status::kQueued, 0, {}, 0, {}), MessageKind::Status));
+  const auto submitted = manager_.submit(id, [this, run, scene = std::move(scene)] { execute(run, scene); });
+  if (submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
+    forget(id);
+    hub_.close(id);
+  }
+  return submitted;
+}
 
 RunService::~RunService() { shutdown(); }
 
@@ -169,23 +207,11 @@ std::int64_t RunService::create(const std::string& body) {
   record.createdAt = unixNow();
   const std::int64_t id = repo_.insertRun(record).get();
 
-  auto run = std::make_shared<LiveRun>(id);
-  run->update([&](LiveRun::State& s) { s.particles = particles; });
-  {
-    std::lock_guard lock(liveMutex_);
-    live_[id] = run;
-  }
-  hub_.open(id);
-  hub_.publish(id, makeOutgoing(statusMessage(id, status::kQueued, 0, {}, 0, {}), MessageKind::Status));
-  const auto submitted =
-      manager_.submit(id, [this, run, scene = std::move(scene)] { execute(run, scene); });
-  if (submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
+  if (const auto submitted = enqueue(id, particles, std::move(scene));
+      submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
     // Lost a race for the last queue slot (or the server is stopping): take it back whole.
-    forget(id);
-    hub_.close(id);
     repo_.deleteRun(id).get();
-    if (submitted == RunManager::Submit::ShuttingDown)
-      throw ApiError(503, "the server is shutting down");
+    if (submitted == RunManager::Submit::ShuttingDown) throw ApiError(503, "the server is shutting down");
     throw ApiError(429, "the run queue is full; try again when a run has finished");
   }
   return id;
@@ -501,12 +527,9 @@ void RunService::shutdown() {
     for (auto& [id, run] : live_) run->requestStop(StopReason::Shutdown);
   }
   for (const auto id : manager_.shutdown()) {
-    // Never started: the server is going away with it still in the queue.
-    RunEnd end;
-    end.status = status::kInterrupted;
-    end.error = "the server stopped before the run started";
-    end.finishedAt = unixNow();
-    if (auto run = live(id)) repo_.finishRun(id, end, [this, run, end] { published(run, end); });
+    // Never started: it stays queued in the database, and the next server queues it again.
+    forget(id);
+    hub_.close(id);
   }
   // Every finish callback refers to this object: let them all run before it goes.
   repo_.flush().get();

@@ -63,6 +63,12 @@ class RunService {
 
  private:
   void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene);
+  /// Queues again, in their order, the runs the database holds as queued: they were waiting
+  /// when the server last stopped or was killed.
+  void requeueStored();
+  /// Makes a stored or new run live and hands it to the queue; if the queue refuses it
+  /// (full, or shutting down), the run is not live.
+  RunManager::Submit enqueue(std::int64_t id, int particles, Scene scene);
   /// After a run's end is committed: tell the watchers, drop the live state.
   void published(const std::shared_ptr<LiveRun>& run, const RunEnd& end);
   std::shared_ptr<LiveRun> live(std::int64_t id);

@@ -98,7 +98,7 @@ TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
   EXPECT_TRUE(repo.frames(a).empty());
 }
 
-TEST(Repository, ReopeningMarksUnfinishedRunsInterruptedAndKeepsTheirSeries) {
+TEST(Repository, ReopeningMarksRunningRunsInterruptedKeepsQueuedOnesAndTheirSeries) {
   const auto path = freshDb("reopen");
   std::int64_t running = 0, queuedId = 0, done = 0;
   {
@@ -115,7 +115,7 @@ TEST(Repository, ReopeningMarksUnfinishedRunsInterruptedAndKeepsTheirSeries) {
   Repository repo(path);
   EXPECT_EQ(repo.findRun(running)->status, "interrupted");
   EXPECT_FALSE(repo.findRun(running)->error.empty());
-  EXPECT_EQ(repo.findRun(queuedId)->status, "interrupted");
+  EXPECT_EQ(repo.findRun(queuedId)->status, "queued") << "the server queues it again";
   EXPECT_EQ(repo.findRun(done)->status, "completed");
   EXPECT_EQ(repo.samples(running).size(), 1u);
   // Ids are never reused, even after the newest run is deleted.

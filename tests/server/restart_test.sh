@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Durability: a clean restart keeps every run with its series; a server killed with -9 in the
-# middle of a run comes back with that run `interrupted` (and the one queued behind it), and
-# everything it had stored before the kill intact.
+# middle of a run comes back with that run `interrupted`, everything it had stored before the
+# kill intact, and the run queued behind it queued again (it then completes). Runs queued at a
+# clean stop are queued again too.
 source "$(dirname "$0")/lib.sh"
 
 DB=$TMP_ROOT/data/restart.db
@@ -52,8 +53,7 @@ start_server "$TMP_ROOT/3.log" "$DB" --max-concurrent 1
 req GET "/api/runs/$RUNNING"
 expect "the killed run is interrupted" 200 '"status":"interrupted"'
 expect "with a reason" 200 '"error":"the server stopped before the run ended"'
-req GET "/api/runs/$QUEUED"
-expect "the queued run too" 200 '"status":"interrupted"'
+check "the run queued at the kill is queued again and completes" wait_status "$QUEUED" completed 60
 req GET "/api/runs/$RUNNING/series?format=csv"
 check "its series up to the kill is intact" test "${BODY:0:${#SERIES_AT_KILL}}" = "$SERIES_AT_KILL"
 req GET "/api/runs/$DONE"
@@ -61,15 +61,21 @@ expect "the earlier runs are untouched" 200 '"status":"completed"'
 req GET /api/health
 expect "nothing is left running" 200 '"queued":0,"running":0'
 
-# SIGTERM during a run: it stops the run, which ends interrupted.
+# SIGTERM during a run: it stops the run, which ends interrupted; the run queued behind it
+# waits for the next server.
 req POST /api/runs --data "$LONG_SCENE"
 STOPPED=$(json b.id)
 check "another long run" wait_status "$STOPPED" running 30
+req POST /api/runs --data "$TINY_SCENE"
+WAITING=$(json b.id)
+req GET "/api/runs/$WAITING"
+expect "a run queued behind it" 200 '"status":"queued"'
 stop_server TERM
 check "SIGTERM with a run going exits 0" test $? -eq 0
 start_server "$TMP_ROOT/4.log" "$DB"
 req GET "/api/runs/$STOPPED"
 expect "a run stopped by SIGTERM is interrupted" 200 '"status":"interrupted"'
+check "the run queued at SIGTERM is queued again and completes" wait_status "$WAITING" completed 60
 stop_server TERM
 
 finish
