@@ -38,6 +38,19 @@ nlohmann::json timeOrNull(const std::optional<double>& v) {
 
 std::string notFound(std::int64_t id) { return "no run " + std::to_string(id); }
 
+// The value of `work`, or a 400 for the scene at fault: a SceneError names its field,
+// anything else is reported against `otherField`.
+template <class Work>
+auto badSceneAs400(Work&& work, const char* otherField) {
+  try {
+    return work();
+  } catch (const SceneError& e) {
+    throw ApiError(400, e.reason(), e.field());
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what(), otherField);
+  }
+}
+
 }  // namespace
 
 double unixNow() {
@@ -162,15 +175,8 @@ std::int64_t RunService::create(const std::string& body) {
     sceneJson = std::move(request);
   }
 
-  Scene scene;
-  try {
-    scene = parseScene(sceneJson);
-  } catch (const SceneError& e) {
-    throw ApiError(400, e.reason(), e.field());
-  } catch (const std::exception& e) {
-    // The parser promises SceneError; anything else still means the scene is bad.
-    throw ApiError(400, e.what(), "(json)");
-  }
+  // The parser promises SceneError; anything else still means the scene is bad.
+  Scene scene = badSceneAs400([&] { return parseScene(sceneJson); }, "(json)");
 
   const int particles = estimateParticles(scene);
   if (particles > options_.maxParticles)
@@ -180,14 +186,8 @@ std::int64_t RunService::create(const std::string& body) {
                    "particles");
   // A scene whose cost is absurd (a stiffness of 1e30 N/m steps at 1e-17 s) would hold a run
   // slot at 0 % for ever: refuse it now, naming the field that drives the cost.
-  RunCost cost;
-  try {
-    cost = estimateSceneCost(scene);
-  } catch (const SceneError& e) {
-    throw ApiError(400, e.reason(), e.field());
-  } catch (const std::exception& e) {
-    throw ApiError(400, e.what(), "(scene)");
-  }
+  // Building the world can also refuse the scene (particles overlapping by half at the start).
+  const RunCost cost = badSceneAs400([&] { return estimateSceneCost(scene); }, "(scene)");
   if (cost.certainSeconds() > options_.maxRunSeconds)
     throw ApiError(400,
                    "the run would take about " + humanDuration(cost.certainSeconds()) + " (" + cost.describe() +
