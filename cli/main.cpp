@@ -39,7 +39,7 @@ int usage(std::ostream& out, int code) {
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
-         "        [--max-run-seconds S]   refuse scenes estimated to run longer (default 86400)\n"
+         "        [--max-run-seconds S]   refuse scenes estimated to run longer, stop runs that do (default 86400)\n"
          "                               the HTTP/WebSocket server and dashboard\n"
          "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif

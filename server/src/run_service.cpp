@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "grainlab/errors.hpp"
+#include "grainlab/observer_tee.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "api_types.hpp"
@@ -16,6 +17,7 @@
 #include "repository.hpp"
 #include "stream_hub.hpp"
 #include "stream_observer.hpp"
+#include "wall_time_limit.hpp"
 
 namespace grainlab::server {
 namespace {
@@ -239,7 +241,14 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     summary.status = "cancelled";  // stopped between leaving the queue and starting
   } else {
     try {
-      summary = run_(scene, observer);
+      WallTimeLimit limit(options_.maxRunSeconds);
+      ObserverTee watched{&observer, &limit};
+      summary = run_(scene, watched);
+      if (summary.status == "cancelled" && limit.exceeded() && !run->stopRequested()) {
+        summary.status = "failed";
+        summary.error = "stopped after " + humanDuration(limit.seconds()) +
+                        ", the server's wall-time limit for a run (grainlab serve --max-run-seconds)";
+      }
     } catch (const std::exception& e) {
       summary.status = "failed";
       summary.error = e.what();

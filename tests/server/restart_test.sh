@@ -78,4 +78,17 @@ expect "a run stopped by SIGTERM is interrupted" 200 '"status":"interrupted"'
 check "the run queued at SIGTERM is queued again and completes" wait_status "$WAITING" completed 60
 stop_server TERM
 
+# The wall-time limit: a scene estimated under it (about 1.8 s) that runs far longer (three
+# discs settle slower per particle-step than the estimate's pile) is stopped at the limit and
+# ends failed with the reason.
+start_server "$TMP_ROOT/5.log" "$DB" --max-run-seconds 2
+req POST /api/runs --data "${LONG_SCENE/\"duration\":1000/\"duration\":50}"
+expect "a scene estimated under the limit is accepted" 201
+OVERTIME=$(json b.id)
+check "it stops at the wall-time limit, failed" wait_status "$OVERTIME" failed 30
+req GET "/api/runs/$OVERTIME"
+expect "with the limit as its reason" 200 '"error":"stopped after 2 s, the server.s wall-time limit'
+check "after about the limit ($(json b.wall_seconds) s)" test "$(json 'b.wall_seconds > 1.9 && b.wall_seconds < 10')" = true
+stop_server TERM
+
 finish

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     else if (arg == "--max-queued") o.maxQueuedRuns = std::stoi(value);
     else if (arg == "--max-particles") o.maxParticles = std::stoi(value);
     else if (arg == "--max-body") o.maxBodyBytes = std::stoull(value);
+    else if (arg == "--max-run-seconds") o.maxRunSeconds = std::stod(value);
     else if (arg == "--io-threads") o.ioThreads = std::stoi(value);
     else if (arg == "--fps") o.framesPerSecond = std::stod(value);
     else if (arg == "--replay-every") o.replayFrameEvery = std::stoi(value);
