@@ -27,6 +27,19 @@ def reader(path):
     return r
 
 
+def force_coloured(port, lut, top):
+    """An actor drawing `port`, coloured by each particle's mean contact force (0 to top)."""
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(port)
+    mapper.SetLookupTable(lut)
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("mean_contact_force")
+    mapper.SetScalarRange(0, top)
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    return actor
+
+
 def main(run_dir, png, size=(1000, 760)):
     particles = reader(last(os.path.join(run_dir, "vtk", "particles_*.vtp")))
     contacts = reader(last(os.path.join(run_dir, "vtk", "contacts_*.vtp")))
@@ -50,25 +63,11 @@ def main(run_dir, png, size=(1000, 760)):
     lut.SetHueRange(0.667, 0.0)
     lut.SetTableRange(0, force_range[1])
     lut.Build()
-    disc_mapper = vtk.vtkPolyDataMapper()
-    disc_mapper.SetInputConnection(glyphs.GetOutputPort())
-    disc_mapper.SetLookupTable(lut)
-    disc_mapper.SetScalarModeToUsePointFieldData()
-    disc_mapper.SelectColorArray("mean_contact_force")
-    disc_mapper.SetScalarRange(0, force_range[1])
-    discs = vtk.vtkActor()
-    discs.SetMapper(disc_mapper)
+    discs = force_coloured(glyphs.GetOutputPort(), lut, force_range[1])
 
 
     # Polygons (elongated presets): their cells, coloured the same way.
-    poly_mapper = vtk.vtkPolyDataMapper()
-    poly_mapper.SetInputConnection(particles.GetOutputPort())
-    poly_mapper.SetLookupTable(lut)
-    poly_mapper.SetScalarModeToUsePointFieldData()
-    poly_mapper.SelectColorArray("mean_contact_force")
-    poly_mapper.SetScalarRange(0, force_range[1])
-    polygons = vtk.vtkActor()
-    polygons.SetMapper(poly_mapper)
+    polygons = force_coloured(particles.GetOutputPort(), lut, force_range[1])
 
 
     # Force chains: tubes along the contact lines, radius ∝ fn (a damped contact pulling apart

@@ -68,6 +68,7 @@ RunCost estimateRunCost(const Scene& scene, const World& world) {
   if (cost.timestep < kTinyTimestep) {
     if (scene.solver.timestep > 0) cost.field = "solver.timestep";
     else if (scene.solver.timestepSafety < 1e-3) cost.field = "solver.timestep_safety";
+    // A density under a thousandth of quartz's (2,650 kg/m³) is the likelier typo.
     else if (scene.material.density < 1e-3 * 2650) cost.field = "material.density";
     else cost.field = "material.normal_stiffness";
   } else {
