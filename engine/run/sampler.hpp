@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grainlab/analysis/histogram.hpp"
+#include "grainlab/state_archive.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
@@ -27,6 +28,16 @@ class Sampler {
   Sample measure(int stageIndex, const StageSpec& stage, double strainRate);
   double peakPhiMobDeg() const { return peakPhiMob_; }
   double lastVoidRatio() const { return lastVoidRatio_; }
+  /// Checkpoints: the strain references and the running peak.
+  void persist(StateArchive& a) {
+    a.section("sampler");
+    a(stretch1Ref_);
+    a(stretch2Ref_);
+    a(areaRef_);
+    a(meanDiameter_);
+    a(peakPhiMob_);
+    a(lastVoidRatio_);
+  }
 
  private:
   OutputSpec output_;

@@ -16,6 +16,10 @@ class FreeStage : public Stage {
   double progress() const override { return std::min(1.0, elapsed() / spec_.duration); }
   double sampleCoordinate() const override { return elapsed(); }
   double sampleSpacing() const override { return spacing_; }
+  void persist(StateArchive& a) override {
+    a(start_);
+    a(spacing_);
+  }
 
  private:
   double elapsed() const { return world_.time() - start_; }

@@ -73,6 +73,41 @@ void MembraneStage::afterStep() {
   }
 }
 
+void MembraneStage::persist(StateArchive& a) {
+  a(stress_);
+  a(startTime_);
+  a(sampleInterval_);
+  a(measureEvery_);
+  a(dtControl_);
+  a(stepsSinceMeasure_);
+  a(started_);
+}
+
+void CompactionStage::persist(StateArchive& a) {
+  MembraneStage::persist(a);
+  a(done_);
+  a(startArea_);
+  a(jammedArea_);
+  a(progress_);
+}
+
+void ConsolidationStage::persist(StateArchive& a) {
+  MembraneStage::persist(a);
+  a(servo11_);
+  a(servo22_);
+  a(windowStart_);
+  a(windowArea_);
+  a(done_);
+}
+
+void BiaxialStage::persist(StateArchive& a) {
+  MembraneStage::persist(a);
+  a(servo11_);
+  a(stretch2Start_);
+  a(sampleStrain_);
+  a(meanDiameter_);
+}
+
 double MembraneStage::servoCrossings(double demCrossings) const {
   return world_.engine() == WorldSettings::Engine::Box2d ? kRigidServoCrossings : demCrossings;
 }

@@ -21,6 +21,7 @@ class MembraneStage : public Stage {
   double sampleCoordinate() const override { return world_.time() - startTime_; }
   double sampleSpacing() const override { return sampleInterval_; }
   const StressTensor& stress() const { return stress_; }
+  void persist(StateArchive& a) override;
 
  protected:
   /// Called after each stress measurement: choose the strain rates.
@@ -58,6 +59,7 @@ class CompactionStage : public MembraneStage {
   /// By area, from the start toward the target void ratio, or without one toward a jammed
   /// packing (solid fraction ~0.8): the pressure says nothing until the particles touch.
   double progress() const override;
+  void persist(StateArchive& a) override;
 
  private:
   void control() override;
@@ -73,6 +75,7 @@ class ConsolidationStage : public MembraneStage {
   ConsolidationStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
   bool finished() const override { return done_ || timedOut(); }
   double progress() const override;
+  void persist(StateArchive& a) override;
 
  private:
   void control() override;
@@ -93,6 +96,7 @@ class BiaxialStage : public MembraneStage {
   double sampleCoordinate() const override { return axialStrain(); }
   double sampleSpacing() const override { return sampleStrain_; }
   double work() const override { return 4.0; }
+  void persist(StateArchive& a) override;
 
  private:
   double axialStrain() const { return 1.0 - membrane_.stretch2() / stretch2Start_; }

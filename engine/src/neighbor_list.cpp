@@ -115,6 +115,22 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
       carriedFrom_[k] = static_cast<int>(o);
     }
   }
+  index(n);
+  valid_ = true;
+}
+
+void NeighborList::persist(StateArchive& a) {
+  a(valid_);
+  a(skin_);
+  a.bitwise(reference_);
+  a(pairs_);
+  if (a.loading()) {
+    carriedFrom_.clear();  // read only right after a rebuild, which sets it
+    index(static_cast<int>(reference_.size()));
+  }
+}
+
+void NeighborList::index(int n) {
   // Each particle's pairs, in pair order (a counting sort over the sorted pair list).
   adjacencyStart_.assign(static_cast<size_t>(n) + 1, 0);
   for (const PairState& p : pairs_) {
@@ -129,7 +145,6 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     adjacency_[static_cast<size_t>(fill[p.i]++)] = static_cast<int>(2 * k);
     if (p.j >= 0) adjacency_[static_cast<size_t>(fill[p.j]++)] = static_cast<int>(2 * k + 1);
   }
-  valid_ = true;
 }
 
 }  // namespace grainlab

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grainlab/math.hpp"
+#include "grainlab/state_archive.hpp"
 #include "grainlab/particle.hpp"
 #include "grainlab/wall.hpp"
 
@@ -33,6 +34,9 @@ class NeighborList {
   /// returns true if it did.
   bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
               std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved);
+  /// The list as it stands (the pairs with their history, and where it was built): enough
+  /// for the next update to rebuild, or not, exactly as this one would.
+  void persist(StateArchive& a);
   /// Forces a rebuild at the next update (particles or walls were added).
   void invalidate() { valid_ = false; }
 
@@ -49,6 +53,8 @@ class NeighborList {
  private:
   void build(std::span<const Vec2> positions, std::span<const double> boundingRadii,
              std::span<const Motion> motions, std::span<const Wall> walls, double skin);
+  // Each particle's pairs (adjacency) from the pair list.
+  void index(int particles);
 
   bool valid_ = false;
   double skin_ = 0;

@@ -62,6 +62,8 @@ class PolygonCollider {
   /// Full feature searches so far (the rest of the pair-steps reused their features), for
   /// the profile.
   long long featureSearches() const { return searches_.load(std::memory_order_relaxed); }
+  /// Continues the count from a checkpoint.
+  void setFeatureSearches(long long n) { searches_.store(n, std::memory_order_relaxed); }
 
  private:
   // A face's span and height in its polygon's body frame: t·v1, t·v2 and n·v1, with t the

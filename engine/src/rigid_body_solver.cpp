@@ -39,6 +39,27 @@ b2PolygonShape shrunkPolygon(const Polygon& poly, double scale, double skin) {
   return shape;
 }
 
+// b2World keeps 1/dt of its last step (m_inv_dt0) to scale the warm-start impulses by the
+// ratio of timesteps; a new b2World has 0 there and would drop them on its first step. Box2D
+// has no setter, so the member is reached the one way the language allows without Box2D's
+// co-operation: an explicit instantiation may name a private member, and a friend defined in
+// it hands out the pointer.
+struct InvDt0Tag {
+  using type = float b2World::*;
+  friend type member(InvDt0Tag);
+};
+template <class Tag, typename Tag::type M>
+struct ExposeMember {
+  friend typename Tag::type member(Tag) { return M; }
+};
+template struct ExposeMember<InvDt0Tag, &b2World::m_inv_dt0>;
+
+b2ContactID swapped(b2ContactID id) {
+  std::swap(id.cf.indexA, id.cf.indexB);
+  std::swap(id.cf.typeA, id.cf.typeB);
+  return id;
+}
+
 }  // namespace
 
 RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
@@ -67,22 +88,41 @@ RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
   for (int k = 0; k < n; ++k) {
     extent = std::max(extent, (world.position_[k] - origin_).norm() + world.boundingRadius_[k]);
   }
-  const double halfWidth = 2 * extent * lengthScale_ + 1000;
-  for (int k = 0; k < n; ++k) addParticle(k);
-  for (int w = 0; w < static_cast<int>(world.walls_.size()); ++w) addWall(w, halfWidth);
+  halfWidth_ = 2 * extent * lengthScale_ + 1000;
+  std::vector<BodyState> bodies(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const b2Vec2 x = toB2((world.position_[k] - origin_) * lengthScale_), v = toB2(world.velocity_[k] * lengthScale_);
+    bodies[k] = {x.x, x.y, static_cast<float>(world.angle_[k]), v.x, v.y, static_cast<float>(world.spin_[k])};
+  }
+  build(bodies, {});
+}
+
+void RigidBodySolver::build(const std::vector<BodyState>& bodies, const std::vector<ContactState>& contacts) {
+  const World& world = world_;
+  bodies_.clear();
+  fixtures_.clear();
+  b2_ = std::make_unique<b2World>(toB2(world.gravity_ * lengthScale_));
+  b2_->SetAllowSleeping(false);
+  b2_->SetContinuousPhysics(false);
+  b2_->SetSubStepping(false);
+  b2_->SetWarmStarting(true);
+  for (int k = 0; k < world.size(); ++k) addParticle(k, bodies[static_cast<size_t>(k)]);
+  for (int w = 0; w < static_cast<int>(world.walls_.size()); ++w) addWall(w, halfWidth_);
+  if (contacts.empty()) return;
+  restoreWarmStart(contacts);
 }
 
 RigidBodySolver::~RigidBodySolver() = default;
 
-void RigidBodySolver::addParticle(int k) {
+void RigidBodySolver::addParticle(int k, const BodyState& state) {
   const World& w = world_;
   const Motion motion = w.motion_[k];
   b2BodyDef def;
   def.type = motion == Motion::Dynamic ? b2_dynamicBody : motion == Motion::Kinematic ? b2_kinematicBody : b2_staticBody;
-  def.position = toB2((w.position_[k] - origin_) * lengthScale_);
-  def.angle = static_cast<float>(w.angle_[k]);
-  def.linearVelocity = toB2(w.velocity_[k] * lengthScale_);
-  def.angularVelocity = static_cast<float>(w.spin_[k]);
+  def.position.Set(state.x, state.y);
+  def.angle = state.angle;
+  def.linearVelocity.Set(state.vx, state.vy);
+  def.angularVelocity = state.spin;
   def.allowSleep = false;
   def.bullet = false;
   b2Body* body = b2_->CreateBody(&def);
@@ -136,6 +176,82 @@ void RigidBodySolver::addWall(int index, double halfWidth) {
   fixture.restitution = static_cast<float>(world_.material_.restitution);
   fixture.userData.pointer = encode(-1 - index);
   fixtures_.push_back(body->CreateFixture(&fixture));
+}
+
+void RigidBodySolver::capture(std::vector<BodyState>& bodies, std::vector<ContactState>& contacts) const {
+  bodies.resize(bodies_.size());
+  for (size_t k = 0; k < bodies_.size(); ++k) {
+    const b2Body* b = bodies_[k];
+    bodies[k] = {b->GetPosition().x, b->GetPosition().y, b->GetAngle(),
+                 b->GetLinearVelocity().x, b->GetLinearVelocity().y, b->GetAngularVelocity()};
+  }
+  contacts.clear();
+  for (b2Contact* c = b2_->GetContactList(); c; c = c->GetNext()) {
+    const b2Manifold* m = c->GetManifold();
+    if (m->pointCount == 0) continue;  // nothing to warm-start
+    ContactState s{decode(c->GetFixtureA()), decode(c->GetFixtureB()), m->pointCount, {0, 0}, {0, 0}, {0, 0}};
+    for (int p = 0; p < m->pointCount; ++p) {
+      s.ids[p] = m->points[p].id.key;
+      s.normalImpulse[p] = m->points[p].normalImpulse;
+      s.tangentImpulse[p] = m->points[p].tangentImpulse;
+    }
+    contacts.push_back(s);
+  }
+}
+
+// The new b2World's contacts are made now (as its first step would make them) and given
+// their old manifolds' ids and impulses, which that step's collision carries over to the
+// points it finds, as in the old b2World. A pair whose fixtures now come in the other order
+// gets its feature ids turned round; its impulses keep their signs (normal and tangent both
+// reverse with the order, and so does the force they act on).
+void RigidBodySolver::restoreWarmStart(const std::vector<ContactState>& contacts) {
+  const_cast<b2ContactManager&>(b2_->GetContactManager()).FindNewContacts();
+  std::vector<const ContactState*> sorted(contacts.size());
+  for (size_t k = 0; k < contacts.size(); ++k) sorted[k] = &contacts[k];
+  auto key = [](int a, int b) { return std::pair(std::min(a, b), std::max(a, b)); };
+  std::sort(sorted.begin(), sorted.end(), [&](const ContactState* x, const ContactState* y) {
+    return key(x->a, x->b) < key(y->a, y->b);
+  });
+  for (b2Contact* c = b2_->GetContactList(); c; c = c->GetNext()) {
+    const int a = decode(c->GetFixtureA()), b = decode(c->GetFixtureB());
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), key(a, b),
+                                     [&](const ContactState* s, const std::pair<int, int>& k) { return key(s->a, s->b) < k; });
+    if (it == sorted.end() || key((*it)->a, (*it)->b) != key(a, b)) continue;
+    const ContactState& s = **it;
+    const bool turned = s.a != a;
+    b2Manifold* m = c->GetManifold();
+    m->pointCount = s.points;
+    for (int p = 0; p < s.points; ++p) {
+      b2ContactID id;
+      id.key = s.ids[p];
+      m->points[p].id = turned ? swapped(id) : id;
+      m->points[p].normalImpulse = s.normalImpulse[p];
+      m->points[p].tangentImpulse = s.tangentImpulse[p];
+    }
+  }
+  b2_.get()->*member(InvDt0Tag{}) = 1.0f / static_cast<float>(world_.timestep());  // as after a step of dt
+}
+
+void RigidBodySolver::rebuild() {
+  std::vector<BodyState> bodies;
+  std::vector<ContactState> contacts;
+  capture(bodies, contacts);
+  build(bodies, contacts);
+}
+
+void RigidBodySolver::persist(StateArchive& a) {
+  a.same(lengthScale_, "box2d's length scale");
+  a.same(massScale_, "box2d's mass scale");
+  std::vector<BodyState> bodies;
+  std::vector<ContactState> contacts;
+  if (!a.loading()) capture(bodies, contacts);
+  a(bodies);
+  a(contacts);
+  a.bitwise(contacts_);
+  if (a.loading()) {
+    a.require(bodies.size() == bodies_.size(), "box2d's body count differs from the scene's");
+    build(bodies, contacts);
+  }
 }
 
 double RigidBodySolver::apparentStiffness(double dt) const {

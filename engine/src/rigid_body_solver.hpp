@@ -26,6 +26,11 @@
 //    the fixtures and every existing contact. Restitution e on every fixture, applied by
 //    Box2D above its restitution threshold, left at its default of one length unit per second
 //    (one mean particle radius per second); slower impacts are perfectly inelastic.
+//  - Checkpoints: a b2World's internals (its broad-phase tree, the order of its contacts,
+//    which decides the solver's order) cannot be saved, so every kRebuildEvery steps the
+//    b2World is rebuilt from its own float state and warm-start impulses, in a fixed order
+//    (rebuild()). A run resumed from a checkpoint taken at such a step rebuilds the same
+//    b2World, and continues bit for bit.
 //  - Not mapped: the contact stiffnesses (contacts are rigid: no elastic energy, overlaps are
 //    only Box2D's slop and solver error) and Cundall's local damping (no counterpart in a
 //    rigid-body solver; Box2D's own damping is viscous and would slow steady motion too).
@@ -35,6 +40,7 @@
 
 #include "grainlab/contact.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/state_archive.hpp"
 
 class b2World;
 class b2Body;
@@ -49,6 +55,9 @@ class RigidBodySolver {
   /// The default box2d timestep is this multiple of the DEM's (timestep_safety × the critical
   /// timestep of the scene's springs). See docs/speed-accuracy.md for why.
   static constexpr double kTimestepScale = 10.0;
+  /// Steps between rebuilds of the b2World from its own state (and so between the steps at
+  /// which a box2d run can be checkpointed). A rebuild costs about what a few steps do.
+  static constexpr int kRebuildEvery = 1000;
 
   /// Builds the b2World from the World's current particles and walls.
   explicit RigidBodySolver(World& world);
@@ -67,6 +76,13 @@ class RigidBodySolver {
 
   double lengthScale() const { return lengthScale_; }  ///< Box2D units per metre
 
+  /// Tears the b2World down and builds it again from its bodies' float state and its
+  /// contacts' warm-start impulses, bodies in particle order: afterwards the b2World depends
+  /// only on that state, not on its history.
+  void rebuild();
+  /// Saves that state, or loads it and rebuilds (World::persist; call at a rebuild step).
+  void persist(StateArchive& a);
+
   /// The stiffness a contact appears to have under slow loading, N/m: (4 n_v / 3) m̄ / dt²
   /// for n_v velocity iterations and the mean particle mass m̄. A rigid contact has none, but
   /// the iteration-limited solver lets a packing take up a boundary strain within Box2D's
@@ -77,7 +93,22 @@ class RigidBodySolver {
   double apparentStiffness(double dt) const;
 
  private:
-  void addParticle(int k);
+  // A body's state as Box2D holds it, in Box2D units and single precision.
+  struct BodyState {
+    float x, y, angle, vx, vy, spin;
+  };
+  // A contact's warm start: its fixtures (particle index, or −1 − wall) and per manifold
+  // point the feature id and the impulses.
+  struct ContactState {
+    int a, b;
+    int points;
+    unsigned ids[2];
+    float normalImpulse[2], tangentImpulse[2];
+  };
+  void build(const std::vector<BodyState>& bodies, const std::vector<ContactState>& contacts);
+  void capture(std::vector<BodyState>& bodies, std::vector<ContactState>& contacts) const;
+  void restoreWarmStart(const std::vector<ContactState>& contacts);
+  void addParticle(int k, const BodyState& state);
   void addWall(int w, double halfWidth);
   void gatherContacts(double dt);
 
@@ -85,6 +116,7 @@ class RigidBodySolver {
   double lengthScale_ = 1;  // Box2D units per m
   double massScale_ = 1;    // Box2D units per kg (per metre of thickness)
   Vec2 origin_ = Vec2::Zero();
+  double halfWidth_ = 0;    // of the walls' boxes, Box2D units
   std::unique_ptr<b2World> b2_;
   std::vector<b2Body*> bodies_;     // one per particle, in index order
   std::vector<b2Fixture*> fixtures_;  // particles' then walls'

@@ -11,6 +11,7 @@
 #include "contact_geometry.hpp"
 #include "contact_law.hpp"
 #include "grainlab/errors.hpp"
+#include "grainlab/state_archive.hpp"
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
 #include "rigid_body_solver.hpp"
@@ -215,9 +216,10 @@ void World::step() {
   auto t0 = Clock::now();
   if (rigid_) {
     rigid_->step(dt);
-    profile_.forces += seconds(t0, Clock::now());
     ++steps_;
     time_ += dt;
+    if (steps_ % RigidBodySolver::kRebuildEvery == 0) rigid_->rebuild();
+    profile_.forces += seconds(t0, Clock::now());
     return;
   }
   forEachParticleRange([&](int begin, int end) {
@@ -229,6 +231,43 @@ void World::step() {
   profile_.integrate += seconds(t0, t1);
   ++steps_;
   time_ += dt;
+}
+
+bool World::resumable() const { return !rigid_ || steps_ % RigidBodySolver::kRebuildEvery == 0; }
+
+void World::persist(StateArchive& a) {
+  a.section("world");
+  a.require(prepared_, "the world must be initialized before its state is loaded");
+  a.same(size(), "the particle count");
+  a.same(walls_.size(), "the wall count");
+  double massSum = 0;  // the particles' masses, in order: a fingerprint of the specimen
+  for (int k = 0; k < size(); ++k) massSum = massSum * 1.000001 + mass_[k];
+  a.same(massSum, "the particles' masses");
+  a(material_);  // friction changes between stages
+  a(timestep_);
+  a(steps_);
+  a(time_);
+  a.bitwise(position_);
+  a.bitwise(velocity_);
+  a.bitwise(force_);
+  a(angle_);
+  a(spin_);
+  a(torque_);
+  a(cos_);
+  a(sin_);
+  a(profile_);
+  if (rigid_) {
+    a.section("box2d");
+    rigid_->persist(a);
+    return;
+  }
+  a.section("contacts");
+  neighbors_->persist(a);
+  a.bitwise(polygonCache_);
+  if (a.loading()) {
+    if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
+    if (pool_) assignDeferredSlots();  // the slots follow the pair list
+  }
 }
 
 void World::forEachParticleRange(const std::function<void(int, int)>& body) {

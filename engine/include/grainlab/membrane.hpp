@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "grainlab/contact.hpp"
+#include "grainlab/state_archive.hpp"
 #include "grainlab/stress.hpp"
 #include "grainlab/world.hpp"
 
@@ -24,6 +25,16 @@ class Membrane {
   void applyVelocities();
   /// Advances the ring's stretches by one step of dt (call after each step).
   void advance(double dt);
+
+  /// Checkpoints: the strain rates and stretches (the ring itself is the world's).
+  void persist(StateArchive& a) {
+    a.section("membrane");
+    a.bitwise(centre_);  // found from the initial positions, as when the run began
+    a(rate11_);
+    a(rate22_);
+    a(stretch1_);
+    a(stretch2_);
+  }
 
   /// Current length over initial length of the ring along each axis.
   double stretch1() const { return stretch1_; }

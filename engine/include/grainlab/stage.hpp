@@ -2,6 +2,8 @@
 // A stage of a run: what drives the boundary between steps, and when it is over.
 #include <string>
 
+#include "grainlab/state_archive.hpp"
+
 namespace grainlab {
 
 class Stage {
@@ -24,6 +26,11 @@ class Stage {
   /// Said of a stage that ended otherwise than by its own criterion (e.g. at its time
   /// limit); empty if it ended normally. Recorded in the run's summary.
   virtual std::string endNote() const { return {}; }
+  /// Checkpoints: the stage's own state (servo integrals, where it started, what it has
+  /// decided), saved, or loaded into the same stage rebuilt on the resumed world. Every
+  /// member that changes after construction, or that construction read from the world,
+  /// belongs here: a resumed stage must decide exactly as the saved one would have.
+  virtual void persist(StateArchive& a) = 0;
 };
 
 }  // namespace grainlab

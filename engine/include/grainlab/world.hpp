@@ -19,6 +19,7 @@
 namespace grainlab {
 
 class NeighborList;
+class StateArchive;
 class PolygonCollider;
 class RigidBodySolver;
 class WorkerPool;
@@ -93,6 +94,17 @@ class World {
   void initialize();
   /// Advances one timestep: kick, drift, neighbour update, forces.
   void step();
+  /// Checkpoints: everything the next step depends on (state, contact history, kept polygon
+  /// features, the box2d engine's bodies and warm-start impulses), saved into `a`, or loaded
+  /// from it into a world built from the same scene and initialized. After a load, step()
+  /// continues bit for bit as the saved world would have. Loading checks that the particles
+  /// are the same (CheckpointError otherwise).
+  void persist(StateArchive& a);
+  /// Whether the state can be saved now: always for dem; for box2d only at the steps where
+  /// its b2World is rebuilt from its own state (RigidBodySolver::kRebuildEvery), since a
+  /// b2World's internals (its broad-phase tree, its contact order) cannot be saved.
+  bool resumable() const;
+
   /// Throws SimulationError if any state is non-finite or an overlap has run away (beyond
   /// half of the smaller particle's size), naming the particle and the likely cause.
   void checkHealth() const;
