@@ -11,6 +11,7 @@
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
+#include "run_command.hpp"
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
 #include "tradeoff_command.hpp"
@@ -28,6 +29,10 @@ int usage(std::ostream& out, int code) {
          "  run --preset NAME --out DIR  run a preset\n"
          "      [--vtk]                  also write ParaView frames to DIR/vtk (output.vtk)\n"
          "      [--force]                run even if the estimate says it takes more than 30 days\n"
+         "                               a checkpoint is kept in DIR every output.checkpoint_every_s\n"
+         "                               (60 s) and on SIGINT/SIGTERM, which stop the run resumably\n"
+         "  resume DIR                   continue an interrupted run from DIR's checkpoint; its\n"
+         "                               outputs end as the uninterrupted run's would\n"
          "  presets                      list the presets\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
@@ -45,53 +50,6 @@ int usage(std::ostream& out, int code) {
 #endif
          "  help                         this text\n";
   return code;
-}
-
-int runCommand(const std::vector<std::string>& args) {
-  std::string scenePath, preset, out;
-  bool vtk = false, force = false;
-  for (size_t k = 0; k < args.size(); ++k) {
-    if (args[k] == "--out" && k + 1 < args.size()) out = args[++k];
-    else if (args[k] == "--vtk") vtk = true;
-    else if (args[k] == "--force") force = true;
-    else if (args[k] == "--preset" && k + 1 < args.size()) preset = args[++k];
-    else if (!args[k].empty() && args[k][0] != '-' && scenePath.empty()) scenePath = args[k];
-    else {
-      std::cerr << "grainlab run: unexpected argument " << args[k] << "\n";
-      return usage(std::cerr, 2);
-    }
-  }
-  if (out.empty() || scenePath.empty() == preset.empty()) {
-    std::cerr << "grainlab run: give a SCENE.json or --preset NAME, and --out DIR\n";
-    return 2;
-  }
-  grainlab::Scene scene;
-  try {
-    // The whole scene is validated before anything is written.
-    scene = preset.empty() ? grainlab::loadSceneFile(scenePath) : grainlab::parseScene(grainlab::presetScene(preset));
-  } catch (const grainlab::SceneError& e) {
-    std::cerr << "error: " << e.field() << ": " << e.reason() << "\n";
-    return 2;
-  }
-  if (vtk) scene.output.vtk = true;
-  grainlab::RunOutput output(out, scene, &std::cerr);
-  // A run estimated to take longer than this is refused unless --force: it is a typo (a
-  // stiffness of 1e30, a strain rate of 1e-12) far more often than a plan.
-  grainlab::RunLimits limits;
-  if (!force) limits.maxSeconds = 30 * 86400.0;
-  const grainlab::RunSummary summary = grainlab::runScene(scene, output, limits);
-  if (summary.refused) {
-    std::cerr << "error: " << summary.error << " (grainlab run --force runs it anyway)\n";
-    return 2;
-  }
-  if (const grainlab::VtkWriter* vtkWriter = output.vtk()) {
-    std::cerr << "vtk: " << vtkWriter->frames() << " frames, " << vtkWriter->bytesWritten() / 1e6 << " MB in "
-              << vtkWriter->writeSeconds() << " s (" << 100 * vtkWriter->writeSeconds() / summary.wallSeconds
-              << "% of the run): " << out << "/vtk/run.pvd\n";
-  }
-  if (summary.status == "completed") return 0;
-  std::cerr << "error: run " << summary.status << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
-  return summary.status == "cancelled" ? 3 : 1;
 }
 
 #ifdef GRAINLAB_HAS_SERVER
@@ -151,7 +109,8 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
-    if (command == "run") return runCommand(args);
+    if (command == "run") return grainlab::runCommand(args);
+    if (command == "resume") return grainlab::resumeCommand(args);
     if (command == "presets") {
       for (const std::string& name : grainlab::presetNames()) std::cout << name << "\n";
       return 0;

@@ -1,6 +1,11 @@
 #include "grainlab/output_writer.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -67,6 +72,40 @@ void OutputWriter::onStart(const Scene&, const World&) {
   series_.open(fs::path(dir_) / "series.csv", std::ios::binary | std::ios::trunc);
   if (!series_) throw std::runtime_error("cannot write " + dir_ + "/series.csv");
   series_ << seriesHeader() << '\n';
+}
+
+void OutputWriter::persistOutput(StateArchive& a) {
+  a.section("series.csv");
+  const fs::path path = fs::path(dir_) / "series.csv";
+  if (!a.loading()) {
+    series_.flush();
+    if (!series_) throw std::runtime_error("cannot write " + path.string());
+    seriesBytes_ = static_cast<std::uint64_t>(series_.tellp());
+    // The rows up to here must outlive a crash as surely as the checkpoint that counts them.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || ::fsync(fd) != 0) {
+      const std::string why = std::strerror(errno);
+      if (fd >= 0) ::close(fd);
+      throw std::runtime_error("cannot flush " + path.string() + " to disk: " + why);
+    }
+    ::close(fd);
+  }
+  a(seriesBytes_);
+}
+
+void OutputWriter::onResume(const Scene&, const World&) {
+  started_ = std::chrono::steady_clock::now();
+  const fs::path path = fs::path(dir_) / "series.csv";
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec || size < seriesBytes_) {
+    throw std::runtime_error(path.string() + " is shorter than when the checkpoint was written (" +
+                             std::to_string(ec ? 0 : size) + " of " + std::to_string(seriesBytes_) +
+                             " bytes): it cannot be continued");
+  }
+  fs::resize_file(path, seriesBytes_);  // rows written after the checkpoint are written again
+  series_.open(path, std::ios::binary | std::ios::app);
+  if (!series_) throw std::runtime_error("cannot write " + path.string());
 }
 
 void OutputWriter::onSample(const Sample& sample, const World&) {

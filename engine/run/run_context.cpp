@@ -65,6 +65,28 @@ void RunContext::endStage() {
   if (membrane_) membrane_->setStrainRates(0, 0);
 }
 
+void RunContext::persist(StateArchive& a) {
+  a.section("run context");
+  std::uint64_t stage = stageIndex_;
+  a(stage);
+  a.require(stage < scene_.stages.size(), "stage " + std::to_string(stage) + " is past the scene's stages");
+  a(nextSample_);
+  a(lastSampleStep_);
+  a(voidRatioAfterConsolidation_);
+  a(sampleSeconds_);
+  world_->persist(a);
+  if (membrane_) membrane_->persist(a);
+  sampler_->persist(a);
+  if (a.loading()) {
+    // As beginStage, without what it resets: friction, strain references and the next
+    // sample come from the checkpoint.
+    stageIndex_ = static_cast<size_t>(stage);
+    stage_ = makeStage(scene_.stages[stageIndex_], scene_.output, *world_, membrane_.get());
+  }
+  a.section("stage");
+  stage_->persist(a);
+}
+
 bool RunContext::sampleDue() const { return stage_->sampleCoordinate() >= nextSample_; }
 
 void RunContext::sample(RunObserver& observer) {

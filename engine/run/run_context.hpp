@@ -22,6 +22,9 @@ class RunContext {
   ~RunContext();
 
   World& world() { return *world_; }
+  /// The stage begun last.
+  Stage& stage() { return *stage_; }
+  size_t stageIndex() const { return stageIndex_; }
   double totalWork() const;
   Stage& beginStage(size_t index);
   void endStage();
@@ -30,6 +33,10 @@ class RunContext {
   double peakPhiMobDeg() const { return sampler_->peakPhiMobDeg(); }
   double voidRatioAfterConsolidation() const { return voidRatioAfterConsolidation_; }
   double sampleSeconds() const { return sampleSeconds_; }
+  /// Checkpoints: the world, the ring, the sampler and the current stage, mid-stage. Loading
+  /// (into a context just built from the same scene) rebuilds that stage on the loaded world
+  /// and then loads its state: stage() is then the stage to go on with.
+  void persist(StateArchive& a);
 
  private:
   const Scene& scene_;

@@ -1,7 +1,10 @@
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "grainlab/errors.hpp"
 #include "grainlab/run.hpp"
@@ -12,8 +15,10 @@ namespace grainlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Progress is reported, and cancellation polled, this often (steps).
+// Progress is reported, cancellation polled and checkpoints considered this often (steps).
+// It divides RigidBodySolver::kRebuildEvery, so box2d runs reach a resumable step here.
 constexpr int kProgressEvery = 200;
 // Health (finite state, no runaway overlap) is checked this often (steps), and at every
 // sample: often enough to stop a blow-up within a few steps of its start, at ~1% of the cost.
@@ -35,9 +40,175 @@ bool notePackingTimestep(const World& world, RunSummary& summary) {
   return true;
 }
 
+// Where the run loop stands between two steps: with the RunContext's state, what a
+// checkpoint holds.
+struct LoopState {
+  std::uint64_t stage = 0;     // the stage under way
+  double workDone = 0;         // of the stages before it
+  bool timestepNoted = false;
+  double wallBefore = 0;       // s of wall time in earlier sessions of this run (before a resume)
+  void persist(StateArchive& a, RunSummary& summary) {
+    a.section("loop");
+    a(stage);
+    a(workDone);
+    a(timestepNoted);
+    a(wallBefore);
+    a(summary.notes);
+    a(summary.checkpoints);
+    a(summary.checkpointSeconds);
+  }
+};
+
+// One run from wherever `loop` stands: from the first stage, or (resumed) inside loop.stage,
+// whose stage object the context already holds.
+class RunLoop {
+ public:
+  RunLoop(const Scene& scene, RunContext& context, RunObserver& observer, const CheckpointPolicy& policy,
+          Clock::time_point start)
+      : scene_(scene), context_(context), world_(context.world()), observer_(observer), policy_(policy),
+        start_(start), lastCheckpoint_(Clock::now()) {}
+
+  void run(LoopState& loop, RunSummary& summary, bool resumed) {
+    const double totalWork = context_.totalWork();
+    bool stopping = false;
+    const size_t first = loop.stage;
+    for (size_t s = first; s < scene_.stages.size(); ++s) {
+      loop.stage = s;
+      const bool midStage = resumed && s == first;
+      Stage& stage = midStage ? context_.stage() : context_.beginStage(s);
+      if (!midStage) context_.sample(observer_);  // the state the stage starts from
+      while (!stage.finished()) {
+        stage.beforeStep();
+        world_.step();
+        stage.afterStep();
+        const std::int64_t step = world_.stepCount();
+        if (step % kHealthEvery == 0) {
+          world_.checkHealth();
+          if (!loop.timestepNoted) loop.timestepNoted = notePackingTimestep(world_, summary);
+        }
+        if (context_.sampleDue()) context_.sample(observer_);
+        if (step % kProgressEvery != 0) continue;
+        observer_.onProgress((loop.workDone + stage.progress() * stage.work()) / totalWork, stage.name(), world_);
+        if (observer_.cancelRequested()) {
+          summary.status = "cancelled";
+          return;
+        }
+        stopping = stopping || observer_.stopRequested();
+        if (!world_.resumable()) continue;
+        if (stopping) {
+          checkpoint(loop, summary);
+          summary.status = "interrupted";
+          return;
+        }
+        if (!policy_.path.empty() && since(lastCheckpoint_) >= policy_.everySeconds) checkpoint(loop, summary);
+      }
+      context_.sample(observer_);  // the state the stage ends in
+      if (const std::string note = stage.endNote(); !note.empty()) summary.notes.push_back(note);
+      loop.workDone += stage.work();
+      context_.endStage();
+    }
+  }
+
+ private:
+  // A checkpoint that cannot be written (disk full) does not stop the run: it is said in the
+  // summary, and the previous checkpoint, untouched, is still there to resume from.
+  void checkpoint(LoopState& loop, RunSummary& summary) {
+    if (policy_.path.empty()) return;
+    const auto t0 = Clock::now();
+    try {
+      ++summary.checkpoints;
+      StateArchive a;
+      a.section("grainlab run");
+      std::string sceneJson = policy_.sceneJson;
+      a(sceneJson);
+      LoopState saved = loop;
+      saved.wallBefore = loop.wallBefore + since(start_);
+      saved.persist(a, summary);
+      context_.persist(a);
+      a.section("output");
+      observer_.persistOutput(a);
+      a.section("end");
+      writeCheckpointFile(policy_.path, a.bytes());
+      summary.checkpointError.clear();
+    } catch (const std::exception& e) {
+      --summary.checkpoints;
+      summary.checkpointError = e.what();
+    }
+    summary.checkpointSeconds += since(t0);
+    lastCheckpoint_ = Clock::now();
+  }
+
+  const Scene& scene_;
+  RunContext& context_;
+  World& world_;
+  RunObserver& observer_;
+  const CheckpointPolicy& policy_;
+  Clock::time_point start_;
+  Clock::time_point lastCheckpoint_;
+};
+
+// Runs the loop, turns what it throws into a failed summary, and finishes the summary.
+RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer, const CheckpointPolicy& policy,
+                  LoopState& loop, RunSummary summary, bool resumed, Clock::time_point start) {
+  World& world = context.world();
+  try {
+    RunLoop(scene, context, observer, policy, start).run(loop, summary, resumed);
+  } catch (const std::exception& e) {
+    summary.status = "failed";
+    summary.error = e.what();
+  }
+  summary.steps = world.stepCount();
+  summary.particles = world.size();
+  summary.peakPhiMobDeg = context.peakPhiMobDeg();
+  summary.voidRatioAfterConsolidation = context.voidRatioAfterConsolidation();
+  summary.sampleSeconds = context.sampleSeconds();
+  summary.wallSeconds = loop.wallBefore + since(start);
+  if (summary.status == "completed") {
+    observer.onProgress(1.0, "done", world);
+    // A finished run has nothing to resume: its checkpoints would only take space.
+    if (!policy.path.empty()) {
+      std::error_code ec;
+      std::filesystem::remove(policy.path, ec);
+      std::filesystem::remove(policy.path + ".previous", ec);
+    }
+  }
+  observer.onFinish(summary, world);
+  return summary;
+}
+
+// The payload of the checkpoint at `path`, or if it cannot be read, of the one before it;
+// `note` (if given) then says why, and the unreadable one is moved aside to `.refused`, so the
+// next checkpoint does not push the good one out as `.previous`.
+std::string readNewestCheckpoint(const std::string& path, std::string* note) {
+  try {
+    return readCheckpointFile(path);
+  } catch (const CheckpointError& newest) {
+    std::string payload;
+    try {
+      payload = readCheckpointFile(path + ".previous");
+    } catch (const CheckpointError& previous) {
+      throw CheckpointError(std::string(newest.what()) + "; and " + previous.what());
+    }
+    if (note) {
+      *note = std::string(newest.what()) + ": resumed from the checkpoint before it";
+      std::error_code ec;
+      std::filesystem::rename(path, path + ".refused", ec);
+    }
+    return payload;
+  }
+}
+
 }  // namespace
 
-RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits) {
+Scene checkpointScene(const std::string& path) {
+  StateArchive a(readNewestCheckpoint(path, nullptr));
+  a.section("grainlab run");
+  std::string json;
+  a(json);
+  return parseScene(nlohmann::json::parse(json));
+}
+
+RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits, const CheckpointPolicy& checkpoint) {
   const auto start = Clock::now();
   RunSummary summary;
   std::unique_ptr<RunContext> context;
@@ -60,53 +231,52 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
     summary.status = "failed";
     summary.refused = true;
     summary.error = os.str();
-    summary.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    summary.wallSeconds = since(start);
     return summary;
   }
   observer.onStart(scene, world);
+  LoopState loop;
+  return finish(scene, *context, observer, checkpoint, loop, summary, false, start);
+}
+
+RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint) {
+  const auto start = Clock::now();
+  RunSummary summary;
+  std::string payload;
+  Scene scene;
+  std::unique_ptr<RunContext> context;
+  LoopState loop;
+  CheckpointPolicy policy = checkpoint;
   try {
-    const double totalWork = context->totalWork();
-    double workDone = 0;
-    bool timestepNoted = false;
-    for (size_t s = 0; s < scene.stages.size(); ++s) {
-      Stage& stage = context->beginStage(s);
-      context->sample(observer);  // the state the stage starts from
-      while (!stage.finished()) {
-        stage.beforeStep();
-        world.step();
-        stage.afterStep();
-        const std::int64_t step = world.stepCount();
-        if (step % kHealthEvery == 0) {
-          world.checkHealth();
-          if (!timestepNoted) timestepNoted = notePackingTimestep(world, summary);
-        }
-        if (context->sampleDue()) context->sample(observer);
-        if (step % kProgressEvery == 0) {
-          observer.onProgress((workDone + stage.progress() * stage.work()) / totalWork, stage.name(), world);
-          if (observer.cancelRequested()) {
-            summary.status = "cancelled";
-            break;
-          }
-        }
-      }
-      if (summary.status == "cancelled") break;
-      context->sample(observer);  // the state the stage ends in
-      if (const std::string note = stage.endNote(); !note.empty()) summary.notes.push_back(note);
-      workDone += stage.work();
-      context->endStage();
-    }
+    payload = readNewestCheckpoint(path, &summary.resumeNote);
+    StateArchive a(payload);
+    a.section("grainlab run");
+    a(policy.sceneJson);
+    scene = parseScene(nlohmann::json::parse(policy.sceneJson));
+    context = std::make_unique<RunContext>(scene);
+    loop.persist(a, summary);
+    context->persist(a);
+    a.section("output");
+    observer.persistOutput(a);
+    a.section("end");
+    a.expectEnd();
   } catch (const std::exception& e) {
     summary.status = "failed";
     summary.error = e.what();
+    summary.refused = true;  // nothing was run or written
+    return summary;
   }
-  summary.steps = world.stepCount();
-  summary.peakPhiMobDeg = context->peakPhiMobDeg();
-  summary.voidRatioAfterConsolidation = context->voidRatioAfterConsolidation();
-  summary.sampleSeconds = context->sampleSeconds();
-  summary.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (summary.status == "completed") observer.onProgress(1.0, "done", world);
-  observer.onFinish(summary, world);
-  return summary;
+  World& world = context->world();
+  observer.onEstimate(estimateRunCost(scene, world));
+  try {
+    observer.onResume(scene, world);
+  } catch (const std::exception& e) {
+    summary.status = "failed";
+    summary.error = e.what();
+    summary.refused = true;
+    return summary;
+  }
+  return finish(scene, *context, observer, policy, loop, summary, true, start);
 }
 
 }  // namespace grainlab

@@ -134,6 +134,36 @@ void VtkWriter::onStart(const Scene&, const World&) {
   fs::create_directories(vtk);
 }
 
+void VtkWriter::persistOutput(StateArchive& a) {
+  a.section("vtk");
+  a(samples_);
+  a(lastFrameStep_);
+  a(bytes_);
+  a(seconds_);
+  std::uint64_t n = frames_.size();
+  a(n);
+  if (a.loading()) frames_.resize(n);
+  for (auto& [time, frame] : frames_) {
+    a(time);
+    a(frame);
+  }
+}
+
+void VtkWriter::onResume(const Scene&, const World&) {
+  const fs::path vtk = fs::path(dir_) / "vtk";
+  fs::create_directories(vtk);
+  for (const auto& entry : fs::directory_iterator(vtk)) {
+    if (entry.path().extension() != ".vtp") continue;
+    // particles_NNNN.vtp / contacts_NNNN.vtp: the frame number after the last underscore
+    const std::string stem = entry.path().stem().string();
+    const auto at = stem.rfind('_');
+    if (at == std::string::npos || at + 1 == stem.size() ||
+        stem.find_first_not_of("0123456789", at + 1) != std::string::npos) continue;
+    if (std::stoll(stem.substr(at + 1)) >= static_cast<long long>(frames_.size())) fs::remove(entry.path());
+  }
+  if (!frames_.empty()) writeCollection();
+}
+
 void VtkWriter::onSample(const Sample&, const World& world) {
   if (samples_++ % every_ == 0) writeFrame(world);
 }

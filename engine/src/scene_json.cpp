@@ -144,6 +144,7 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   o.histogramBins = static_cast<int>(r.integer("histogram_bins", o.histogramBins, 18, 360));
   o.vtk = r.boolean("vtk", o.vtk);
   o.vtkEvery = static_cast<int>(r.integer("vtk_every", o.vtkEvery, 1, 1000000));
+  o.checkpointEverySeconds = r.number("checkpoint_every_s", o.checkpointEverySeconds, 0, kInf, true);
   r.finish();
   return o;
 }
@@ -212,7 +213,9 @@ Scene parseScene(const nlohmann::json& json) {
   return scene;
 }
 
-Scene loadSceneFile(const std::string& path) {
+Scene loadSceneFile(const std::string& path) { return parseScene(loadSceneJson(path)); }
+
+nlohmann::json loadSceneJson(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw SceneError("(file)", "cannot read " + path);
   nlohmann::json j;
@@ -221,7 +224,7 @@ Scene loadSceneFile(const std::string& path) {
   } catch (const nlohmann::json::parse_error& e) {
     throw SceneError("(json)", std::string("not valid JSON: ") + e.what());
   }
-  return parseScene(j);
+  return j;
 }
 
 }  // namespace grainlab

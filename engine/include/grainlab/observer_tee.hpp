@@ -31,6 +31,17 @@ class ObserverTee : public RunObserver {
     for (RunObserver* o : observers_) cancel = o->cancelRequested() || cancel;
     return cancel;
   }
+  bool stopRequested() override {
+    bool stop = false;
+    for (RunObserver* o : observers_) stop = o->stopRequested() || stop;
+    return stop;
+  }
+  void persistOutput(StateArchive& a) override {
+    for (RunObserver* o : observers_) o->persistOutput(a);
+  }
+  void onResume(const Scene& scene, const World& world) override {
+    for (RunObserver* o : observers_) o->onResume(scene, world);
+  }
   void onFinish(const RunSummary& summary, const World& world) override {
     for (RunObserver* o : observers_) o->onFinish(summary, world);
   }

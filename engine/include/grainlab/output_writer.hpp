@@ -22,11 +22,16 @@ class OutputWriter : public RunObserver {
   void onSample(const Sample&, const World&) override;
   void onProgress(double fraction, std::string_view stage, const World&) override;
   void onFinish(const RunSummary&, const World&) override;
+  /// Checkpoints: series.csv's length, flushed to disk first.
+  void persistOutput(StateArchive& a) override;
+  /// series.csv cut back to its length at the checkpoint, then appended to.
+  void onResume(const Scene&, const World&) override;
 
  private:
   std::string dir_;
   std::ostream* progress_;
   std::ofstream series_;
+  std::uint64_t seriesBytes_ = 0;  // at the checkpoint being loaded
   int lastPercent_ = -1;
   std::chrono::steady_clock::time_point started_;  // for the time left
 };

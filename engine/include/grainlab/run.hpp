@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "grainlab/checkpoint.hpp"
 #include "grainlab/run_cost.hpp"
 #include "grainlab/scene.hpp"
 
@@ -28,7 +29,9 @@ struct Sample {
 };
 
 struct RunSummary {
-  std::string status = "completed";   ///< completed | failed | cancelled
+  /// completed | failed | cancelled | interrupted (stopped on request; resumable from its
+  /// checkpoint if it had one)
+  std::string status = "completed";
   std::string error;                  ///< why it failed
   bool refused = false;               ///< failed before its first step: its cost is over the limit
   double wallSeconds = 0;
@@ -38,6 +41,15 @@ struct RunSummary {
   double peakPhiMobDeg = 0;
   double voidRatioAfterConsolidation = -1;  ///< -1 if the scene has no isotropic stage
   std::vector<std::string> notes;           ///< stages that ended at a limit, and similar
+  /// Of the run's checkpoints: how many were written, the wall time spent writing them, and
+  /// the last one's error if one could not be written (the run goes on; the previous good
+  /// checkpoint stays).
+  int checkpoints = 0;
+  double checkpointSeconds = 0;
+  std::string checkpointError;
+  /// resumeRun: said when the newest checkpoint could not be read and the one before it was
+  /// used (not part of summary.json: the outputs are the same either way).
+  std::string resumeNote;
 };
 
 class RunObserver {
@@ -55,6 +67,16 @@ class RunObserver {
   virtual void onProgress(double /*fraction*/, std::string_view /*stage*/, const World&) {}
   /// Polled with onProgress; true stops the run as cancelled.
   virtual bool cancelRequested() { return false; }
+  /// Polled with onProgress; true stops the run as interrupted, after a checkpoint (a
+  /// clean stop: SIGTERM, a server shutting down), so it can be resumed.
+  virtual bool stopRequested() { return false; }
+  /// Checkpoints: the observer's own part of the run's state. Saving, it first makes what
+  /// it has written so far durable, then records where it stands (a file's length, a sample
+  /// count); loading, before onResume, it reads that back.
+  virtual void persistOutput(StateArchive&) {}
+  /// Instead of onStart when a run resumes from a checkpoint: the observer cuts its outputs
+  /// back to where the checkpoint stood (a crash may have written past it) and carries on.
+  virtual void onResume(const Scene& scene, const World& world) { onStart(scene, world); }
   virtual void onFinish(const RunSummary&, const World&) {}
 };
 
@@ -62,6 +84,19 @@ class RunObserver {
 /// take longer than `limits.maxSeconds` (RunCost::certainSeconds) is refused before its first
 /// step: the summary says failed, names the field that drives the cost and gives the figures,
 /// and the observer sees only onEstimate (nothing is written).
-RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits = {});
+///
+/// With a `checkpoint` path, the run's state is written there every checkpoint.everySeconds of
+/// wall time (at the next step where the world is resumable) and when it stops on request.
+RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits = {},
+                    const CheckpointPolicy& checkpoint = {});
+
+/// Continues the run saved in the checkpoint at `path` (its scene is inside it) as if it had
+/// never stopped: the same steps, samples and outputs, bit for bit. Goes on writing
+/// checkpoints to checkpoint.path (usually `path` again) if set. A checkpoint that cannot be
+/// read fails the run with the reason, before onStart or onResume.
+RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint = {});
+/// The scene of the checkpoint that resumeRun(path) would resume (the newest readable one).
+/// Throws CheckpointError if none can be read.
+Scene checkpointScene(const std::string& path);
 
 }  // namespace grainlab

@@ -59,6 +59,10 @@ struct OutputSpec {
   int histogramBins = 18;
   bool vtk = false;               ///< ParaView frames in DIR/vtk (grainlab/vtk_writer.hpp)
   int vtkEvery = 1;               ///< a VTK frame at every vtkEvery-th sample (and at the end)
+  /// s of wall time between checkpoints (grainlab/checkpoint.hpp), for runs that keep them
+  /// (`grainlab run` and the server do). Writing one takes milliseconds for a few thousand
+  /// particles.
+  double checkpointEverySeconds = 60;
 };
 
 struct Scene {
@@ -79,5 +83,7 @@ struct Scene {
 Scene parseScene(const nlohmann::json& json);
 /// Reads and parses a file; a JSON syntax error is a SceneError on field "(json)".
 Scene loadSceneFile(const std::string& path);
+/// The JSON of a scene file, unparsed; SceneError as loadSceneFile for a file that is not JSON.
+nlohmann::json loadSceneJson(const std::string& path);
 
 }  // namespace grainlab

@@ -27,6 +27,10 @@ class VtkWriter : public RunObserver {
   VtkWriter(std::string directory, int every);
   void onStart(const Scene&, const World&) override;
   void onSample(const Sample&, const World&) override;
+  /// Checkpoints: the frames written so far.
+  void persistOutput(StateArchive& a) override;
+  /// Frames written after the checkpoint are removed (they are written again).
+  void onResume(const Scene&, const World&) override;
   void onFinish(const RunSummary&, const World&) override;
 
   /// Writes one frame of the world as it is now (the run calls it; public for tests).
