@@ -83,9 +83,17 @@ void writeCheckpointFile(const std::string& path, std::string_view payload) {
   put(header, checkpointChecksum(payload));
   const std::string tmp = path + ".tmp";
   writeDurably(tmp, header, payload);
+  // The good checkpoint keeps its name until the new one replaces it in one rename, so a
+  // kill at any moment leaves `path` readable: `.previous` is a second name (a hard link)
+  // for it, made before the rename.
   std::error_code ec;
-  if (fs::exists(path)) fs::rename(path, path + ".previous", ec);
-  if (ec) fail(path, ec.message());
+  if (fs::exists(path)) {
+    const std::string previous = path + ".previous";
+    fs::remove(previous, ec);
+    fs::create_hard_link(path, previous, ec);
+    if (ec) fs::copy_file(path, previous, fs::copy_options::overwrite_existing, ec);  // no hard links here
+    if (ec) fail(previous, ec.message());
+  }
   fs::rename(tmp, path, ec);
   if (ec) fail(path, ec.message());
   syncDirectory(fs::path(path).parent_path());

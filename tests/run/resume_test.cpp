@@ -1,0 +1,207 @@
+// Exact restart: a run stopped (cleanly, at a checkpoint) and resumed, once or twice, writes
+// the same bytes as the same run done without stopping — series.csv, the final particles and
+// contacts, and summary.json apart from its wall-clock figures — for discs and polygons, in
+// the DEM (one and two threads) and Box2D modes. And a checkpoint that cannot be trusted is
+// refused, with the previous good one used instead.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "grainlab/checkpoint.hpp"
+#include "grainlab/presets.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/run_output.hpp"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// The files of a run; stops it (as SIGTERM would) once its progress passes `stopAt`.
+class StoppingOutput : public RunOutput {
+ public:
+  StoppingOutput(const fs::path& dir, const Scene& scene, double stopAt)
+      : RunOutput(dir.string(), scene, nullptr), stopAt_(stopAt) {}
+  void onProgress(double fraction, std::string_view stage, const World& world) override {
+    RunOutput::onProgress(fraction, stage, world);
+    progress_ = fraction;
+  }
+  bool stopRequested() override { return progress_ >= stopAt_; }
+
+ private:
+  double stopAt_;
+  double progress_ = 0;
+};
+
+// summary.json without what the wall clock decides.
+nlohmann::json deterministicSummary(const fs::path& dir) {
+  nlohmann::json s = nlohmann::json::parse(slurp(dir / "summary.json"));
+  for (const char* key : {"wall_seconds", "sample_seconds", "particle_steps_per_second"}) s.erase(key);
+  for (const char* key : {"forces", "integrate", "neighbors"}) s["profile_seconds"].erase(key);
+  return s;
+}
+
+class Resume : public ::testing::TestWithParam<std::tuple<const char*, nlohmann::json>> {
+ protected:
+  fs::path root_ = fs::temp_directory_path() / ("grainlab_resume_" + std::to_string(::getpid()) + "_" +
+                                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  void SetUp() override { fs::create_directories(root_); }
+  void TearDown() override { fs::remove_all(root_); }
+};
+
+std::string variantName(const ::testing::TestParamInfo<Resume::ParamType>& info) {
+  return std::get<0>(info.param);
+}
+
+nlohmann::json variant(const char* preset, const char* engine, int threads, double axialStrain) {
+  nlohmann::json scene = presetScene(preset);
+  scene["solver"]["engine"] = engine;
+  scene["solver"]["threads"] = threads;
+  scene["stages"].back()["target_axial_strain"] = axialStrain;  // shorter, same physics
+  return scene;
+}
+
+// Stopped in compaction, resumed and stopped in shearing, resumed to the end.
+TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
+  const Scene scene = parseScene(std::get<1>(GetParam()));
+  const fs::path whole = root_ / "whole", stopped = root_ / "stopped";
+  {
+    RunOutput output(whole.string(), scene, nullptr);
+    ASSERT_EQ(runScene(scene, output).status, "completed");
+  }
+  const std::string checkpoint = (stopped / "checkpoint.bin").string();
+  const CheckpointPolicy policy{checkpoint, 1e9, std::get<1>(GetParam()).dump()};  // only at the stops
+  {
+    StoppingOutput output(stopped, scene, 0.05);
+    const RunSummary first = runScene(scene, output, {}, policy);
+    ASSERT_EQ(first.status, "interrupted") << first.error;
+    ASSERT_EQ(first.checkpoints, 1);
+    ASSERT_TRUE(fs::exists(checkpoint));
+  }
+  {
+    StoppingOutput output(stopped, scene, 0.7);
+    const RunSummary second = resumeRun(checkpoint, output, policy);
+    ASSERT_EQ(second.status, "interrupted") << second.error;
+    ASSERT_TRUE(second.resumeNote.empty()) << second.resumeNote;
+  }
+  {
+    RunOutput output(stopped.string(), scene, nullptr);
+    const RunSummary last = resumeRun(checkpoint, output, policy);
+    ASSERT_EQ(last.status, "completed") << last.error;
+  }
+  for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"}) {
+    const std::string a = slurp(whole / file), b = slurp(stopped / file);
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_TRUE(a == b) << file << " differs after resuming (" << a.size() << " vs " << b.size() << " bytes)";
+  }
+  EXPECT_EQ(deterministicSummary(whole), deterministicSummary(stopped));
+  EXPECT_FALSE(fs::exists(checkpoint)) << "a completed run leaves no checkpoint behind";
+  EXPECT_FALSE(fs::exists(checkpoint + ".previous"));
+}
+
+// The threaded variants are shorter: a pool of two threads on two busy cores (ctest -j2) is slow,
+// and what they add (per-thread force assembly resumed) shows within the first stages.
+INSTANTIATE_TEST_SUITE_P(
+    Modes, Resume,
+    ::testing::Values(std::make_tuple("DemDiscs", variant("circular-quick", "dem", 1, 0.2)),
+                      std::make_tuple("DemDiscsTwoThreads", variant("circular-quick", "dem", 2, 0.05)),
+                      std::make_tuple("DemPolygons", variant("elongated-random-quick", "dem", 1, 0.03)),
+                      std::make_tuple("DemPolygonsTwoThreads", variant("elongated-random-quick", "dem", 2, 0.01)),
+                      std::make_tuple("Box2dDiscs", variant("circular-quick", "box2d", 1, 0.1)),
+                      std::make_tuple("Box2dPolygons", variant("elongated-random-quick", "box2d", 1, 0.03))),
+    variantName);
+
+// Two checkpoints of one run: the newest and the one before it.
+class BadCheckpoint : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::create_directories(dir_);
+    scene_ = presetScene("circular-quick");
+    const Scene scene = parseScene(scene_);
+    StoppingOutput first(dir_, scene, 0.2);
+    ASSERT_EQ(runScene(scene, first, {}, policy()).status, "interrupted");
+    previousPayload_ = readCheckpointFile(path());
+    StoppingOutput second(dir_, scene, 0.4);
+    ASSERT_EQ(resumeRun(path(), second, policy()).status, "interrupted");
+    ASSERT_NE(readCheckpointFile(path()), previousPayload_);
+    ASSERT_EQ(readCheckpointFile(path() + ".previous"), previousPayload_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path() const { return (dir_ / "checkpoint.bin").string(); }
+  CheckpointPolicy policy() const { return {path(), 1e9, scene_.dump()}; }
+  void overwrite(const std::string& bytes) { std::ofstream(path(), std::ios::binary) << bytes; }
+  // Resuming now falls back to the previous checkpoint, says so, and keeps it.
+  void expectFallback(const std::string& reason) {
+    RunOutput output(dir_.string(), parseScene(scene_), nullptr);
+    const RunSummary summary = resumeRun(path(), output, {});
+    EXPECT_EQ(summary.status, "completed") << summary.error;
+    EXPECT_NE(summary.resumeNote.find(reason), std::string::npos) << summary.resumeNote;
+    EXPECT_NE(summary.resumeNote.find("checkpoint before it"), std::string::npos) << summary.resumeNote;
+    EXPECT_EQ(readCheckpointFile(path() + ".previous"), previousPayload_) << "the good checkpoint is kept";
+    EXPECT_TRUE(fs::exists(path() + ".refused")) << "the bad one is kept aside for whoever asks why";
+  }
+
+  fs::path dir_ = fs::temp_directory_path() / ("grainlab_badcheckpoint_" + std::to_string(::getpid()));
+  nlohmann::json scene_;
+  std::string previousPayload_;
+};
+
+TEST_F(BadCheckpoint, FlippedByteIsRefusedAsCorrupt) {
+  std::string bytes = slurp(path());
+  bytes[bytes.size() / 2] ^= 0x20;
+  overwrite(bytes);
+  EXPECT_THROW(readCheckpointFile(path()), CheckpointError);
+  expectFallback("corrupt (checksum mismatch)");
+}
+
+TEST_F(BadCheckpoint, TruncatedFileIsRefused) {
+  const std::string bytes = slurp(path());
+  overwrite(bytes.substr(0, bytes.size() - 100));
+  expectFallback("truncated");
+}
+
+TEST_F(BadCheckpoint, OtherFormatVersionIsRefused) {
+  std::string bytes = slurp(path());
+  const std::uint32_t version = kCheckpointFormatVersion + 1;
+  std::memcpy(bytes.data() + std::string_view("GRAINLAB-CHECKPOINT\n").size(), &version, sizeof version);
+  overwrite(bytes);
+  expectFallback("format version " + std::to_string(version));
+}
+
+TEST_F(BadCheckpoint, BothUnreadableFailsTheRunNamingBothAndWritesNothing) {
+  overwrite("not a checkpoint");
+  std::ofstream(path() + ".previous", std::ios::binary) << "GRAINLAB-CHECKPOINT\n";
+  const std::string seriesBefore = slurp(dir_ / "series.csv");
+  RunOutput output(dir_.string(), parseScene(scene_), nullptr);
+  const RunSummary summary = resumeRun(path(), output, {});
+  EXPECT_EQ(summary.status, "failed");
+  EXPECT_NE(summary.error.find("not a grainlab checkpoint"), std::string::npos) << summary.error;
+  EXPECT_NE(summary.error.find("header incomplete"), std::string::npos) << summary.error;
+  EXPECT_EQ(slurp(dir_ / "series.csv"), seriesBefore) << "a refused resume leaves the outputs as they were";
+}
+
+TEST(CheckpointFile, WriteIsAtomicAndKeepsTheOldFileAsPrevious) {
+  const fs::path dir = fs::temp_directory_path() / ("grainlab_ckfile_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / "c.bin").string();
+  writeCheckpointFile(path, "first");
+  writeCheckpointFile(path, "second");
+  EXPECT_EQ(readCheckpointFile(path), "second");
+  EXPECT_EQ(readCheckpointFile(path + ".previous"), "first");
+  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace grainlab
