@@ -45,6 +45,7 @@ int usage(std::ostream& out, int code) {
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
          "        [--max-run-seconds S]   refuse scenes estimated to run longer, stop runs that do (default 86400)\n"
+         "        [--resume-interrupted]  resume the runs a stopped or killed server left interrupted\n"
          "                               the HTTP/WebSocket server and dashboard\n"
          "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif
@@ -65,6 +66,7 @@ int serveCommand(const std::vector<std::string>& args) {
     else if (args[k] == "--max-queued" && hasValue) options.maxQueuedRuns = std::stoi(args[++k]);
     else if (args[k] == "--max-particles" && hasValue) options.maxParticles = std::stoi(args[++k]);
     else if (args[k] == "--max-run-seconds" && hasValue) options.maxRunSeconds = std::stod(args[++k]);
+    else if (args[k] == "--resume-interrupted") options.resumeInterrupted = true;
     else if (args[k] == "--max-body" && hasValue) options.maxBodyBytes = std::stoul(args[++k]);
     else {
       std::cerr << "grainlab serve: unexpected argument " << args[k] << "\n";

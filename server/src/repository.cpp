@@ -111,6 +111,13 @@ constexpr const char* kFinishRun =
     "peak_phi_mob_deg = :peak, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
     "WHERE id = :id";
 constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
+// A resumed run waits in the queue again; its end is not known any more.
+constexpr const char* kRequeueRun =
+    "UPDATE runs SET status = 'queued', error = '', finished_at = NULL WHERE id = :id";
+// What a run stored past its checkpoint: the resumed run stores it again.
+constexpr const char* kTruncateSamples = "DELETE FROM samples WHERE run_id = :id AND seq >= :from";
+constexpr const char* kTruncateHistograms = "DELETE FROM histograms WHERE run_id = :id AND seq >= :from";
+constexpr const char* kTruncateFrames = "DELETE FROM frames WHERE run_id = :id AND seq >= :from";
 constexpr const char* kDeleteSamples = "DELETE FROM samples WHERE run_id = :id";
 constexpr const char* kDeleteHistograms = "DELETE FROM histograms WHERE run_id = :id";
 constexpr const char* kDeleteFrames = "DELETE FROM frames WHERE run_id = :id";
@@ -489,6 +496,24 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
       use.run();
     }
     if (after) w.afterCommit.push_back(std::move(after));
+  });
+}
+
+void Repository::requeueRun(std::int64_t id) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kRequeueRun).use();
+    use.bind(":id", id);
+    use.run();
+  });
+}
+
+void Repository::truncateRun(std::int64_t id, std::int64_t samples, std::int64_t frames) {
+  enqueue([=](Writer& w) {
+    for (const char* text : {sql::kTruncateSamples, sql::kTruncateHistograms, sql::kTruncateFrames}) {
+      auto use = w.statement(text).use();
+      use.bind(":id", id).bind(":from", text == sql::kTruncateFrames ? frames : samples);
+      use.run();
+    }
   });
 }
 

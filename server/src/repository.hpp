@@ -77,6 +77,11 @@ class Repository {
                    std::string bytes);
   /// `afterCommit` runs on the writer thread once the end is durable.
   void finishRun(std::int64_t id, RunEnd end, std::function<void()> afterCommit);
+  /// An interrupted (or failed) run about to resume: queued again, its error and end cleared.
+  void requeueRun(std::int64_t id);
+  /// Deletes the samples and histograms from seq `samples` on and the frames from seq
+  /// `frames` on: what a run stored after the checkpoint it resumes from.
+  void truncateRun(std::int64_t id, std::int64_t samples, std::int64_t frames);
   /// Resolves to whether a run was deleted (with its series, histograms and frames).
   std::future<bool> deleteRun(std::int64_t id);
   /// Resolves once everything queued before it is committed.

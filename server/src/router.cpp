@@ -177,7 +177,7 @@ ApiResponse Router::route(const ApiRequest& request) {
   if (seg.size() > 4) return noRoute();
   const std::string_view leaf = seg.size() == 4 ? seg[3] : std::string_view();
   const bool known = seg.size() == 3 || leaf == "series" || leaf == "histograms" || leaf == "frames" ||
-                     leaf == "shapes" || leaf == "cancel" || leaf == "stream";
+                     leaf == "shapes" || leaf == "cancel" || leaf == "resume" || leaf == "stream";
   if (!known) return noRoute();
   if (!id) throw ApiError(404, "no run '" + std::string(seg[2]) + "'");
 
@@ -191,6 +191,10 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (method != "POST") return methodNotAllowed(method, path, "POST");
     auto [status, run] = service_.cancel(*id);
     return jsonResponse(status, run);
+  }
+  if (leaf == "resume") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    return jsonResponse(202, service_.resume(*id));
   }
   if (!read) return methodNotAllowed(method, path, "GET, HEAD");
   if (leaf == "series") {

@@ -15,7 +15,8 @@ inline constexpr const char* kCompleted = "completed";
 inline constexpr const char* kFailed = "failed";
 inline constexpr const char* kCancelled = "cancelled";
 inline constexpr const char* kInterrupted = "interrupted";
-/// True for the states a run never leaves.
+/// True for the states a run ends in (an interrupted or failed run may be resumed: it is then
+/// queued again).
 bool isTerminal(const std::string& s);
 }  // namespace status
 

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
+#include <iostream>
 #include <numeric>
 
 #include "grainlab/errors.hpp"
@@ -108,15 +110,50 @@ RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& opt
     : repo_(repo),
       hub_(hub),
       options_(options),
-      run_(options.runFunction ? options.runFunction
-                               : RunFunction([](const Scene& s, RunObserver& o) { return grainlab::runScene(s, o); })),
+      run_(options.runFunction ? options.runFunction : RunFunction([](const RunRequest& r, RunObserver& o) {
+        return r.resume ? grainlab::resumeRun(r.checkpoint.path, o, r.checkpoint)
+                        : grainlab::runScene(r.scene, o, {}, r.checkpoint);
+      })),
+      checkpointDir_(options.checkpointDir.empty() ? options.db + ".checkpoints" : options.checkpointDir),
       manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
       startedAt_(unixNow()) {
   requeueStored();
 }
 
+std::string RunService::checkpointPath(std::int64_t id) const {
+  return (std::filesystem::path(checkpointDir_) / ("run-" + std::to_string(id) + ".bin")).string();
+}
+
+bool RunService::hasCheckpoint(std::int64_t id) const {
+  const std::string path = checkpointPath(id);
+  return std::filesystem::exists(path) || std::filesystem::exists(path + ".previous");
+}
+
+void RunService::removeCheckpoint(std::int64_t id) const {
+  std::error_code ec;
+  for (const char* suffix : {"", ".previous", ".tmp", ".refused"})
+    std::filesystem::remove(checkpointPath(id) + suffix, ec);
+}
+
 void RunService::requeueStored() {
+  std::error_code ec;
+  std::filesystem::create_directories(checkpointDir_, ec);
   for (const RunRecord& listed : repo_.listRuns()) {
+    if (listed.status == status::kInterrupted && hasCheckpoint(listed.id)) {
+      if (!options_.resumeInterrupted) {
+        std::cerr << "grainlab serve: run " << listed.id << " (" << listed.name << ") was interrupted at step "
+                  << listed.steps << "; resume it with POST /api/runs/" << listed.id
+                  << "/resume, the dashboard, or grainlab serve --resume-interrupted\n";
+        continue;
+      }
+      try {
+        resume(listed.id);
+        std::cerr << "grainlab serve: resuming run " << listed.id << " (" << listed.name << ")\n";
+      } catch (const std::exception& e) {
+        std::cerr << "grainlab serve: cannot resume run " << listed.id << ": " << e.what() << "\n";
+      }
+      continue;
+    }
     if (listed.status != status::kQueued) continue;
     RunEnd end;
     end.status = status::kInterrupted;
@@ -124,7 +161,7 @@ void RunService::requeueStored() {
     try {
       const auto record = repo_.findRun(listed.id);  // the list leaves the scenes out
       Scene scene = parseScene(nlohmann::json::parse(record->scene));
-      const auto submitted = enqueue(listed.id, listed.particles, std::move(scene));
+      const auto submitted = enqueue(listed.id, listed.particles, std::move(scene), hasCheckpoint(listed.id));
       if (submitted == RunManager::Submit::Started || submitted == RunManager::Submit::Queued) continue;
       end.error = "the run queue was full when the server restarted";
     } catch (const std::exception& e) {
@@ -134,7 +171,7 @@ void RunService::requeueStored() {
   }
 }
 
-RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene scene) {
+RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene scene, bool resume) {
   auto run = std::make_shared<LiveRun>(id);
   run->update([&](LiveRun::State& s) { s.particles = particles; });
   {
@@ -143,7 +180,7 @@ RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene sce
   }
   hub_.open(id);
   hub_.publish(id, makeOutgoing(statusMessage(id, status::kQueued, 0, {}, 0, {}), MessageKind::Status));
-  const auto submitted = manager_.submit(id, [this, run, scene = std::move(scene)] { execute(run, scene); });
+  const auto submitted = manager_.submit(id, [this, run, resume, scene = std::move(scene)] { execute(run, scene, resume); });
   if (submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
     forget(id);
     hub_.close(id);
@@ -208,6 +245,7 @@ std::int64_t RunService::create(const std::string& body) {
   record.estimatedSeconds = cost.certainSeconds();
   record.createdAt = unixNow();
   const std::int64_t id = repo_.insertRun(record).get();
+  removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
 
   if (const auto submitted = enqueue(id, particles, std::move(scene));
       submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
@@ -219,7 +257,33 @@ std::int64_t RunService::create(const std::string& body) {
   return id;
 }
 
-void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene) {
+nlohmann::json RunService::resume(std::int64_t id) {
+  const RunRecord record = require(id);
+  if (live(id)) throw ApiError(409, "run " + std::to_string(id) + " is " + record.status + ", not stopped");
+  if (record.status == status::kCompleted || record.status == status::kCancelled || !hasCheckpoint(id))
+    throw ApiError(409, "run " + std::to_string(id) + " (" + record.status + ") has no checkpoint to resume from");
+  Scene scene = badSceneAs400([&] { return parseScene(nlohmann::json::parse(record.scene)); }, "(scene)");
+  // Committed before the run is live: the database's "interrupted" would otherwise outrank
+  // the live state in what GET answers (an ended state in the database wins).
+  repo_.requeueRun(id);
+  repo_.flush().get();
+  const auto submitted = enqueue(id, record.particles, std::move(scene), true);
+  if (submitted == RunManager::Submit::ShuttingDown) throw ApiError(503, "the server is shutting down");
+  if (submitted == RunManager::Submit::QueueFull) {
+    RunEnd end;  // as it was: still resumable later
+    end.status = record.status;
+    end.error = record.error;
+    end.stage = record.stage;
+    end.finishedAt = record.finishedAt.value_or(unixNow());
+    end.steps = record.steps;
+    end.particles = record.particles;
+    repo_.finishRun(id, end, nullptr);
+    throw ApiError(429, "the run queue is full; try again when a run has finished");
+  }
+  return get(id);
+}
+
+void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene, bool resume) {
   const std::int64_t id = run->id();
   const double startedAt = unixNow();
   run->update([&](LiveRun::State& s) {
@@ -243,8 +307,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     try {
       WallTimeLimit limit(options_.maxRunSeconds);
       ObserverTee watched{&observer, &limit};
-      summary = run_(scene, watched);
-      if (summary.status == "cancelled" && limit.exceeded() && !run->stopRequested()) {
+      const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
+      const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
+                                        stored ? stored->scene : std::string()};
+      summary = run_(RunRequest{scene, checkpoint, resume}, watched);
+      if (summary.status == "interrupted" && limit.exceeded() && !run->stopRequested()) {
         summary.status = "failed";
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
                         ", the server's wall-time limit for a run (grainlab serve --max-run-seconds)";
@@ -264,17 +331,18 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 
   RunEnd end;
   end.status = summary.status;
-  if (end.status != status::kCompleted && end.status != status::kFailed && end.status != status::kCancelled) {
+  if (end.status != status::kCompleted && end.status != status::kFailed && end.status != status::kCancelled &&
+      end.status != status::kInterrupted) {
     end.error = "the engine reported status '" + end.status + "'";
     end.status = status::kFailed;
   }
   if (!summary.error.empty()) end.error = summary.error;
   if (end.status == status::kFailed && end.error.empty()) end.error = "the simulation failed";
-  const auto reason = run->stopReason();
-  if (end.status == status::kCancelled && reason == StopReason::Shutdown) {
-    end.status = status::kInterrupted;
-    end.error = "the server stopped before the run ended";
+  if (end.status == status::kInterrupted && end.error.empty()) {
+    end.error = hasCheckpoint(id) ? "the server stopped before the run ended; it can be resumed"
+                                  : "the server stopped before the run ended (no checkpoint: it cannot be resumed)";
   }
+  if (end.status == status::kCancelled) removeCheckpoint(id);  // cancelled means not wanted
   const auto state = run->state();
   end.stage = state.stage;
   end.finishedAt = unixNow();
@@ -286,6 +354,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 
   if (run->deleted()) {
     // Queued after the run's last writes, so nothing of it is left behind.
+    removeCheckpoint(id);
     repo_.deleteRun(id);
     hub_.close(id);
     forget(id);
@@ -364,6 +433,8 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
   };
   if (cancelRequested) j["cancel_requested"] = true;
+  j["resumable"] = !live(r.id) && merged.status != status::kCompleted && merged.status != status::kCancelled &&
+                   hasCheckpoint(r.id);
   if (withScene) {
     auto scene = nlohmann::json::parse(merged.scene, nullptr, false);
     j["scene"] = scene.is_discarded() ? nlohmann::json(nullptr) : scene;
@@ -487,6 +558,7 @@ void RunService::remove(std::int64_t id) {
     hub_.close(id);
     forget(id);
   }
+  removeCheckpoint(id);
   repo_.deleteRun(id).get();
 }
 

@@ -48,6 +48,10 @@ class RunService {
   std::string shapes(std::int64_t id);
   /// Returns the status code (200 cancelled now, 202 stop requested) and the run.
   std::pair<int, nlohmann::json> cancel(std::int64_t id);
+  /// Continues an interrupted run (or one stopped at the wall-time limit) from its checkpoint:
+  /// it is queued again and, once it runs, appends to its series as if it had never stopped.
+  /// 404 unknown, 409 if it is queued or running or has no checkpoint, 429 queue full.
+  nlohmann::json resume(std::int64_t id);
   /// Deletes a run with everything stored for it; a live run is stopped first.
   void remove(std::int64_t id);
   bool exists(std::int64_t id);
@@ -62,13 +66,20 @@ class RunService {
   void shutdown();
 
  private:
-  void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene);
+  void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene, bool resume);
   /// Queues again, in their order, the runs the database holds as queued: they were waiting
-  /// when the server last stopped or was killed.
+  /// when the server last stopped or was killed (a queued run with a checkpoint was waiting
+  /// to resume, and resumes). Interrupted runs with a checkpoint are listed on stderr, and
+  /// resumed too with ServeOptions::resumeInterrupted.
   void requeueStored();
   /// Makes a stored or new run live and hands it to the queue; if the queue refuses it
-  /// (full, or shutting down), the run is not live.
-  RunManager::Submit enqueue(std::int64_t id, int particles, Scene scene);
+  /// (full, or shutting down), the run is not live. `resume`: from its checkpoint.
+  RunManager::Submit enqueue(std::int64_t id, int particles, Scene scene, bool resume = false);
+  /// The run's checkpoint file (it may not exist).
+  std::string checkpointPath(std::int64_t id) const;
+  /// A checkpoint (or the one before it) is there to resume from.
+  bool hasCheckpoint(std::int64_t id) const;
+  void removeCheckpoint(std::int64_t id) const;
   /// After a run's end is committed: tell the watchers, drop the live state.
   void published(const std::shared_ptr<LiveRun>& run, const RunEnd& end);
   std::shared_ptr<LiveRun> live(std::int64_t id);
@@ -81,6 +92,7 @@ class RunService {
   ServeOptions options_;
   RunFunction run_;
   SeriesFormat format_;
+  std::string checkpointDir_;
   RunManager manager_;
   std::mutex liveMutex_;
   std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;

@@ -1,5 +1,7 @@
 #include "stream_observer.hpp"
 
+#include <iostream>
+
 #include <nlohmann/json.hpp>
 
 #include "frame_codec.hpp"
@@ -41,16 +43,35 @@ StreamObserver::StreamObserver(LiveRun& run, Repository& repo, StreamHub& hub,
       storeInterval_(every(1.0 / settings.storeProgressSeconds)) {}
 
 void StreamObserver::onStart(const Scene&, const World& world) {
+  publishShapesAndFrame(world);
+  storeFrame(world, encodeFrame(world, scratch_));
+}
+
+void StreamObserver::onResume(const Scene&, const World& world) {
+  std::cerr << "grainlab serve: run " << run_.id() << " resumes at step " << world.stepCount() << " (sample "
+            << samples_ << ")" << std::endl;
+  repo_.truncateRun(run_.id(), samples_, storedFrames_);
+  // No frame is stored here: the uninterrupted run stored none at this step either.
+  publishShapesAndFrame(world);
+}
+
+void StreamObserver::persistOutput(StateArchive& a) {
+  a.section("server run");
+  if (!a.loading()) repo_.flush().get();  // the rows before the checkpoint are durable
+  a(samples_);
+  a(storedFrames_);
+  a(lastStoredStep_);
+}
+
+void StreamObserver::publishShapesAndFrame(const World& world) {
   // Shapes never change during a run: sent once per client, stored once for replay.
   auto shapes = shapesMessage(world).dump();
   run_.update([&](LiveRun::State& s) { s.particles = world.size(); });
   repo_.setShapes(run_.id(), world.size(), shapes);
   hub_.publish(run_.id(), makeOutgoing(std::move(shapes), MessageKind::Shapes));
-  auto bytes = encodeFrame(world, scratch_);
-  hub_.publish(run_.id(), makeOutgoing(bytes, MessageKind::Frame));
+  hub_.publish(run_.id(), makeOutgoing(encodeFrame(world, scratch_), MessageKind::Frame));
   ++framesSent_;
   lastFrame_ = Clock::now();
-  storeFrame(world, std::move(bytes));
 }
 
 void StreamObserver::onSample(const Sample& sample, const World& world) {
@@ -100,7 +121,11 @@ void StreamObserver::onProgress(double fraction, std::string_view stage, const W
   }
 }
 
-bool StreamObserver::cancelRequested() { return run_.stopRequested(); }
+bool StreamObserver::cancelRequested() {
+  return run_.stopRequested() && run_.stopReason() != StopReason::Shutdown;
+}
+
+bool StreamObserver::stopRequested() { return run_.stopReason() == StopReason::Shutdown; }
 
 void StreamObserver::onFinish(const RunSummary&, const World& world) {
   // The final state, live and for replay: a viewer ends on what the run ended on.

@@ -37,7 +37,16 @@ class StreamObserver : public RunObserver {
   void onStart(const Scene& scene, const World& world) override;
   void onSample(const Sample& sample, const World& world) override;
   void onProgress(double fraction, std::string_view stage, const World& world) override;
+  /// DELETE or POST /cancel: the run ends cancelled.
   bool cancelRequested() override;
+  /// The server is stopping: the run ends interrupted, after a checkpoint.
+  bool stopRequested() override;
+  /// Saving: waits until every row queued so far is committed, then records how many
+  /// samples and frames there are; loading reads that back.
+  void persistOutput(StateArchive& a) override;
+  /// Deletes what was stored past the checkpoint (the server may have been killed after
+  /// it) and sends the shapes and the current frame to the watchers, as onStart does.
+  void onResume(const Scene& scene, const World& world) override;
   void onFinish(const RunSummary& summary, const World& world) override;
 
   std::int64_t samples() const { return samples_; }
@@ -46,6 +55,7 @@ class StreamObserver : public RunObserver {
  private:
   using Clock = std::chrono::steady_clock;
   void storeFrame(const World& world, std::string bytes);
+  void publishShapesAndFrame(const World& world);
 
   LiveRun& run_;
   Repository& repo_;

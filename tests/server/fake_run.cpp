@@ -8,7 +8,8 @@
 namespace grainlab::server::testing {
 
 RunFunction fakeRun(FakeRun spec) {
-  return [spec](const Scene& scene, RunObserver& observer) {
+  return [spec](const RunRequest& request, RunObserver& observer) {
+    const Scene& scene = request.scene;
     World world(scene.material);
     ParticleSpec p;
     p.radius = 0.002;
@@ -24,8 +25,9 @@ RunFunction fakeRun(FakeRun spec) {
       for (int k = 0; k < spec.stepsPerSample; ++k) world.step();
       std::this_thread::sleep_for(spec.delayPerSample);
       observer.onProgress(double(s + 1) / spec.samples, "free", world);
-      if (observer.cancelRequested()) {
-        summary.status = "cancelled";
+      const bool stop = observer.stopRequested();  // a clean stop, as the engine's: interrupted
+      if (stop || observer.cancelRequested()) {
+        summary.status = stop ? "interrupted" : "cancelled";
         observer.onFinish(summary, world);
         return summary;
       }

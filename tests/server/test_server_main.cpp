@@ -10,6 +10,10 @@ int main(int argc, char** argv) {
   grainlab::server::ServeOptions o;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
+    if (arg == "--resume-interrupted") {
+      o.resumeInterrupted = true;
+      continue;
+    }
     if (k + 1 >= argc) {
       std::cerr << "grainlab_test_server: " << arg << " needs a value\n";
       return 2;

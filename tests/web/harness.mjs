@@ -52,10 +52,11 @@ export async function waitUntil(probe, seconds) {
 }
 
 // ---- the server ----
-/** Starts `grainlab serve`; resolves to {base, stop()}. */
-export async function startServer() {
+/** Starts `grainlab serve` (with `extraArgs`); resolves to {base, stop()}. */
+export async function startServer(extraArgs = []) {
   const scratch = mkdtempSync(join(tmpdir(), 'grainlab-web-test-'));
-  const server = spawn(CLI, ['serve', '--host', '127.0.0.1', '--port', '0', '--db', join(scratch, 'grainlab.db'), '--web', WEB],
+  const server = spawn(CLI, ['serve', '--host', '127.0.0.1', '--port', '0', '--db', join(scratch, 'grainlab.db'), '--web', WEB,
+    ...extraArgs],
     { stdio: ['ignore', 'ignore', 'pipe'] });
   let log = '';
   const exited = new Promise((r) => server.on('exit', (code) => r(code)));

@@ -51,6 +51,8 @@ export const api = {
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,
   cancel: (id) => request('POST', `${runPath(id)}/cancel`),
+  /** An interrupted run (or one stopped at the wall-time limit) continues from its checkpoint. */
+  resume: (id) => request('POST', `${runPath(id)}/resume`),
   remove: (id) => request('DELETE', runPath(id)),
   /** {id, columns, rows: [[...]]} */
   series: (id) => request('GET', `${runPath(id)}/series`),

@@ -7,20 +7,22 @@ import { h } from './dom.js';
 import { TERMINAL_STATUSES, duration, localTime, percent, sig } from './format.js';
 
 export class RunHeader {
-  constructor(parent, onCancel) {
+  constructor(parent, onCancel, onResume) {
     this.title = h('h2');
     this.status = h('span', { class: 'status' });
     this.bar = h('span');
     this.progressLabel = h('span', { class: 'label' });
     this.facts = h('span', { class: 'facts' });
     this.cancel = h('button', { type: 'button', class: 'danger', onclick: onCancel }, 'Cancel run');
+    // An interrupted run (server stopped or killed, wall-time limit) goes on from its checkpoint.
+    this.resume = h('button', { type: 'button', onclick: onResume, hidden: true }, 'Resume run');
     this.csv = h('a', { class: 'button' }, 'Download CSV');
     this.compare = h('a', { class: 'button' }, 'Compare…');
     this.element = h('div', { class: 'run-header' },
       this.title, this.status,
       h('span', { class: 'progress', title: 'progress' }, h('span', { class: 'bar' }, this.bar), this.progressLabel),
       this.facts,
-      h('span', { class: 'actions' }, this.cancel, this.csv, this.compare));
+      h('span', { class: 'actions' }, this.cancel, this.resume, this.csv, this.compare));
     parent.append(this.element);
   }
 
@@ -58,6 +60,7 @@ export class RunHeader {
       run.peak_phi_mob_deg !== null ? `peak φ_mob ${sig(run.peak_phi_mob_deg, 3)}°` : null,
     ].filter(Boolean).join(' · ');
     this.cancel.hidden = !running;
+    this.resume.hidden = running || !run.resumable;
     this.csv.href = api.csvUrl(run.id);
     this.csv.download = `grainlab-run-${run.id}-series.csv`;
     this.compare.href = `#/compare?ids=${run.id}`;

@@ -21,7 +21,7 @@ export function runView(root, id) {
   const below = h('div');
   replaceChildren(root, h('section', { class: 'run-view' }, top, errorBox, body, below));
 
-  const header = new RunHeader(top, () => cancel());
+  const header = new RunHeader(top, () => cancel(), () => resume());
   const particles = new ParticlePanel(body);
   const roses = new RosePanel(body);
   const replayBar = new ReplayBar(below, (row) => select(row));
@@ -60,6 +60,16 @@ export function runView(root, id) {
       await api.cancel(run.id);
     } catch (error) {
       showError(`Cancel failed: ${error.message}`);
+    }
+  }
+
+  async function resume() {
+    try {
+      await api.resume(run.id);
+      // The view starts over: the stored samples, then the resumed run live.
+      window.location.reload();
+    } catch (error) {
+      showError(`Resume failed: ${error.message}`);
     }
   }
 

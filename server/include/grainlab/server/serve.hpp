@@ -9,9 +9,17 @@
 
 namespace grainlab::server {
 
-/// Runs one scene to the end, reporting to the observer. The server uses grainlab::runScene;
-/// tests inject their own.
-using RunFunction = std::function<RunSummary(const Scene&, RunObserver&)>;
+/// What the server asks of a run: the scene, where to keep its checkpoints, and whether to
+/// start it or continue it from its checkpoint (POST /api/runs/{id}/resume).
+struct RunRequest {
+  const Scene& scene;
+  CheckpointPolicy checkpoint;
+  bool resume = false;
+};
+
+/// Runs one scene to the end, reporting to the observer. The server uses grainlab::runScene
+/// (or resumeRun); tests inject their own.
+using RunFunction = std::function<RunSummary(const RunRequest&, RunObserver&)>;
 
 struct ServeOptions {
   std::string host = "127.0.0.1";       ///< address to bind; loopback unless told otherwise
@@ -28,6 +36,13 @@ struct ServeOptions {
   int ioThreads = 2;                    ///< threads serving HTTP and WebSocket I/O
   double framesPerSecond = 20;          ///< live particle frames per run, at most
   int replayFrameEvery = 4;             ///< store a replay frame every N samples (and the last)
+  /// Where each run keeps its checkpoint (run-ID.bin); empty = "<db>.checkpoints" beside the
+  /// database. A run that stops early (server stopped or killed, wall-time limit) can be
+  /// resumed from it.
+  std::string checkpointDir;
+  /// On start-up, resume the runs that were interrupted and have a checkpoint (else they are
+  /// only listed on stderr, for POST /api/runs/{id}/resume or the dashboard).
+  bool resumeInterrupted = false;
   /// Replaces grainlab::runScene (tests); empty = the real engine.
   RunFunction runFunction;
 };
