@@ -52,6 +52,11 @@ nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
   s["critical_timestep"] = world.criticalTimestep();
   s["particle_steps_per_second"] =
       summary.wallSeconds > 0 ? summary.particles * static_cast<double>(summary.steps) / summary.wallSeconds : 0.0;
+  // What checkpointing cost (wall time, like the keys above; absent if none was written).
+  if (summary.checkpoints > 0 || !summary.checkpointError.empty()) {
+    s["checkpoints"] = {{"written", summary.checkpoints}, {"seconds", summary.checkpointSeconds}};
+    if (!summary.checkpointError.empty()) s["checkpoints"]["last_error"] = summary.checkpointError;
+  }
   const Profile& p = world.profile();
   s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
                           {"neighbor_rebuilds", p.rebuilds},

@@ -30,7 +30,7 @@ same_outputs() {  # $1 $2: run directories
 import json, sys
 def deterministic(path):
     s = json.load(open(path))
-    for key in ("wall_seconds", "sample_seconds", "particle_steps_per_second"):
+    for key in ("wall_seconds", "sample_seconds", "particle_steps_per_second", "checkpoints"):
         s.pop(key, None)
     for key in ("forces", "integrate", "neighbors"):
         s.get("profile_seconds", {}).pop(key, None)

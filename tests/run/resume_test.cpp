@@ -47,7 +47,7 @@ class StoppingOutput : public RunOutput {
 // summary.json without what the wall clock decides.
 nlohmann::json deterministicSummary(const fs::path& dir) {
   nlohmann::json s = nlohmann::json::parse(slurp(dir / "summary.json"));
-  for (const char* key : {"wall_seconds", "sample_seconds", "particle_steps_per_second"}) s.erase(key);
+  for (const char* key : {"wall_seconds", "sample_seconds", "particle_steps_per_second", "checkpoints"}) s.erase(key);
   for (const char* key : {"forces", "integrate", "neighbors"}) s["profile_seconds"].erase(key);
   return s;
 }
