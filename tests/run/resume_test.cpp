@@ -52,7 +52,14 @@ nlohmann::json deterministicSummary(const fs::path& dir) {
   return s;
 }
 
-class Resume : public ::testing::TestWithParam<std::tuple<const char*, nlohmann::json>> {
+// A scene and the name its test goes by (printed instead of the whole scene).
+struct Variant {
+  const char* name;
+  nlohmann::json scene;
+  friend void PrintTo(const Variant& v, std::ostream* os) { *os << v.name; }
+};
+
+class Resume : public ::testing::TestWithParam<Variant> {
  protected:
   fs::path root_ = fs::temp_directory_path() / ("grainlab_resume_" + std::to_string(::getpid()) + "_" +
                                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -61,27 +68,27 @@ class Resume : public ::testing::TestWithParam<std::tuple<const char*, nlohmann:
 };
 
 std::string variantName(const ::testing::TestParamInfo<Resume::ParamType>& info) {
-  return std::get<0>(info.param);
+  return info.param.name;
 }
 
-nlohmann::json variant(const char* preset, const char* engine, int threads, double axialStrain) {
+Variant variant(const char* name, const char* preset, const char* engine, int threads, double axialStrain) {
   nlohmann::json scene = presetScene(preset);
   scene["solver"]["engine"] = engine;
   scene["solver"]["threads"] = threads;
   scene["stages"].back()["target_axial_strain"] = axialStrain;  // shorter, same physics
-  return scene;
+  return {name, scene};
 }
 
 // Stopped in compaction, resumed and stopped in shearing, resumed to the end.
 TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
-  const Scene scene = parseScene(std::get<1>(GetParam()));
+  const Scene scene = parseScene(GetParam().scene);
   const fs::path whole = root_ / "whole", stopped = root_ / "stopped";
   {
     RunOutput output(whole.string(), scene, nullptr);
     ASSERT_EQ(runScene(scene, output).status, "completed");
   }
   const std::string checkpoint = (stopped / "checkpoint.bin").string();
-  const CheckpointPolicy policy{checkpoint, 1e9, std::get<1>(GetParam()).dump()};  // only at the stops
+  const CheckpointPolicy policy{checkpoint, 1e9, GetParam().scene.dump()};  // only at the stops
   {
     StoppingOutput output(stopped, scene, 0.05);
     const RunSummary first = runScene(scene, output, {}, policy);
@@ -114,12 +121,12 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
 // and what they add (per-thread force assembly resumed) shows within the first stages.
 INSTANTIATE_TEST_SUITE_P(
     Modes, Resume,
-    ::testing::Values(std::make_tuple("DemDiscs", variant("circular-quick", "dem", 1, 0.2)),
-                      std::make_tuple("DemDiscsTwoThreads", variant("circular-quick", "dem", 2, 0.05)),
-                      std::make_tuple("DemPolygons", variant("elongated-random-quick", "dem", 1, 0.03)),
-                      std::make_tuple("DemPolygonsTwoThreads", variant("elongated-random-quick", "dem", 2, 0.01)),
-                      std::make_tuple("Box2dDiscs", variant("circular-quick", "box2d", 1, 0.1)),
-                      std::make_tuple("Box2dPolygons", variant("elongated-random-quick", "box2d", 1, 0.03))),
+    ::testing::Values(variant("DemDiscs", "circular-quick", "dem", 1, 0.2),
+                      variant("DemDiscsTwoThreads", "circular-quick", "dem", 2, 0.05),
+                      variant("DemPolygons", "elongated-random-quick", "dem", 1, 0.03),
+                      variant("DemPolygonsTwoThreads", "elongated-random-quick", "dem", 2, 0.01),
+                      variant("Box2dDiscs", "circular-quick", "box2d", 1, 0.1),
+                      variant("Box2dPolygons", "elongated-random-quick", "box2d", 1, 0.03)),
     variantName);
 
 // Two checkpoints of one run: the newest and the one before it.
