@@ -15,17 +15,14 @@
 #include "grainlab/report/parallel_runs.hpp"
 #include "grainlab/report/run_loader.hpp"
 
+#include "../support/file_bytes.hpp"
+
 namespace grainlab::report {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using grainlab::testing::fileBytes;
 
 class ParallelRuns : public ::testing::Test {
  protected:
@@ -49,8 +46,8 @@ TEST_F(ParallelRuns, ResultsDoNotDependOnHowManyRunAtOnce) {
   ASSERT_EQ(together.at(0).status, "completed") << together[0].error;
   EXPECT_EQ(alone[0].steps, together[0].steps);
   const fs::path a = dir / "alone" / "circular-quick" / "seed-1", b = dir / "together" / "circular-quick" / "seed-1";
-  EXPECT_EQ(slurp(a / "series.csv"), slurp(b / "series.csv"));
-  EXPECT_EQ(slurp(a / "roses.json"), slurp(b / "roses.json"));
+  EXPECT_EQ(fileBytes(a / "series.csv"), fileBytes(b / "series.csv"));
+  EXPECT_EQ(fileBytes(a / "roses.json"), fileBytes(b / "roses.json"));
   EXPECT_TRUE(fs::exists(dir / "together" / "demo-pile" / "seed-1" / "summary.json"));
 
   // Read back from its directory, the run gives the report its series and rose snapshots.

@@ -16,17 +16,14 @@
 #include "grainlab/run.hpp"
 #include "grainlab/run_output.hpp"
 
+#include "../support/file_bytes.hpp"
+
 namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
+using grainlab::testing::fileBytes;
 
 // The files of a run; stops it (as SIGTERM would) once its progress passes `stopAt`.
 class StoppingOutput : public RunOutput {
@@ -46,7 +43,7 @@ class StoppingOutput : public RunOutput {
 
 // summary.json without what the wall clock decides.
 nlohmann::json deterministicSummary(const fs::path& dir) {
-  nlohmann::json s = nlohmann::json::parse(slurp(dir / "summary.json"));
+  nlohmann::json s = nlohmann::json::parse(fileBytes(dir / "summary.json"));
   for (const char* key : {"wall_seconds", "sample_seconds", "particle_steps_per_second", "checkpoints"}) s.erase(key);
   for (const char* key : {"forces", "integrate", "neighbors"}) s["profile_seconds"].erase(key);
   return s;
@@ -108,7 +105,7 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
     ASSERT_EQ(last.status, "completed") << last.error;
   }
   for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"}) {
-    const std::string a = slurp(whole / file), b = slurp(stopped / file);
+    const std::string a = fileBytes(whole / file), b = fileBytes(stopped / file);
     EXPECT_FALSE(a.empty()) << file;
     EXPECT_TRUE(a == b) << file << " differs after resuming (" << a.size() << " vs " << b.size() << " bytes)";
   }
@@ -165,7 +162,7 @@ class BadCheckpoint : public ::testing::Test {
 };
 
 TEST_F(BadCheckpoint, FlippedByteIsRefusedAsCorrupt) {
-  std::string bytes = slurp(path());
+  std::string bytes = fileBytes(path());
   bytes[bytes.size() / 2] ^= 0x20;
   overwrite(bytes);
   EXPECT_THROW(readCheckpointFile(path()), CheckpointError);
@@ -173,13 +170,13 @@ TEST_F(BadCheckpoint, FlippedByteIsRefusedAsCorrupt) {
 }
 
 TEST_F(BadCheckpoint, TruncatedFileIsRefused) {
-  const std::string bytes = slurp(path());
+  const std::string bytes = fileBytes(path());
   overwrite(bytes.substr(0, bytes.size() - 100));
   expectFallback("truncated");
 }
 
 TEST_F(BadCheckpoint, OtherFormatVersionIsRefused) {
-  std::string bytes = slurp(path());
+  std::string bytes = fileBytes(path());
   const std::uint32_t version = kCheckpointFormatVersion + 1;
   std::memcpy(bytes.data() + std::string_view("GRAINLAB-CHECKPOINT\n").size(), &version, sizeof version);
   overwrite(bytes);
@@ -189,13 +186,13 @@ TEST_F(BadCheckpoint, OtherFormatVersionIsRefused) {
 TEST_F(BadCheckpoint, BothUnreadableFailsTheRunNamingBothAndWritesNothing) {
   overwrite("not a checkpoint");
   std::ofstream(path() + ".previous", std::ios::binary) << "GRAINLAB-CHECKPOINT\n";
-  const std::string seriesBefore = slurp(dir_ / "series.csv");
+  const std::string seriesBefore = fileBytes(dir_ / "series.csv");
   RunOutput output(dir_.string(), parseScene(scene_), nullptr);
   const RunSummary summary = resumeRun(path(), output, {});
   EXPECT_EQ(summary.status, "failed");
   EXPECT_NE(summary.error.find("not a grainlab checkpoint"), std::string::npos) << summary.error;
   EXPECT_NE(summary.error.find("header incomplete"), std::string::npos) << summary.error;
-  EXPECT_EQ(slurp(dir_ / "series.csv"), seriesBefore) << "a refused resume leaves the outputs as they were";
+  EXPECT_EQ(fileBytes(dir_ / "series.csv"), seriesBefore) << "a refused resume leaves the outputs as they were";
 }
 
 TEST(CheckpointFile, WriteIsAtomicAndKeepsTheOldFileAsPrevious) {

@@ -12,6 +12,8 @@
 #include "grainlab/studies/cluster.hpp"
 #include "grainlab/studies/run_batch.hpp"
 
+#include "../support/file_bytes.hpp"
+
 namespace grainlab::studies {
 namespace {
 
@@ -27,12 +29,7 @@ nlohmann::json collision(double speed) {
           {"output", {{"sample_interval", 0.0001}}}};
 }
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using grainlab::testing::fileBytes;
 
 class RunBatchTest : public ::testing::Test {
  protected:
@@ -63,11 +60,11 @@ TEST_F(RunBatchTest, EachRunWritesWhatGrainlabRunWrites) {
     OutputWriter writer(direct.string(), nullptr);
     runScene(loadSceneFile((runs_[k].dir / kSceneFile).string()), writer);
     for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"}) {
-      const std::string batch = slurp(runs_[k].dir / file);
+      const std::string batch = fileBytes(runs_[k].dir / file);
       EXPECT_FALSE(batch.empty()) << file;
-      EXPECT_EQ(batch, slurp(direct / file)) << runs_[k].id << " " << file;
+      EXPECT_EQ(batch, fileBytes(direct / file)) << runs_[k].id << " " << file;
     }
-    EXPECT_EQ(nlohmann::json::parse(slurp(runs_[k].dir / kSceneFile)), runs_[k].scene);
+    EXPECT_EQ(nlohmann::json::parse(fileBytes(runs_[k].dir / kSceneFile)), runs_[k].scene);
   }
   // No partial directory is left behind.
   for (const auto& entry : fs::directory_iterator(dir_)) EXPECT_EQ(entry.path().extension(), "") << entry.path();
@@ -100,7 +97,7 @@ TEST_F(RunBatchTest, ARunWhoseSceneChangedIsRunAgain) {
   const std::vector<BatchRunResult> again = run();
   EXPECT_FALSE(again[1].reused);
   EXPECT_TRUE(again[0].reused);
-  EXPECT_EQ(nlohmann::json::parse(slurp(runs_[1].dir / kSceneFile)), runs_[1].scene);
+  EXPECT_EQ(nlohmann::json::parse(fileBytes(runs_[1].dir / kSceneFile)), runs_[1].scene);
 }
 
 TEST_F(RunBatchTest, AFailedRunIsRecordedAndRerunLater) {
