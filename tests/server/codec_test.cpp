@@ -1,6 +1,7 @@
 // Frames, shapes, series rows and paths: the formats clients decode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "frame_codec.hpp"
@@ -67,7 +68,27 @@ TEST(SeriesFormat, CsvIsTheClisAndJsonHasNullForNotMeasured) {
   engine.stage = s.stage;
   engine.values = s.values;
   EXPECT_EQ(format.csvRow(s), formatSeriesRow(engine) + "\n");
-  EXPECT_EQ(format.csvHeader(), seriesHeader() + "\n");
+  // The header the API serves is the contract's (contracts.md: these columns at least, each
+  // once), in seriesColumns() order: checked against the contract's own list, not against the
+  // function that builds it.
+  const std::string header = format.csvHeader();
+  ASSERT_EQ(header.back(), '\n');
+  std::vector<std::string> fields;
+  for (std::size_t at = 0, comma; at < header.size() - 1; at = comma + 1) {
+    comma = std::min(header.find(',', at), header.size() - 1);
+    fields.push_back(header.substr(at, comma - at));
+  }
+  EXPECT_EQ(fields, columns);
+  for (const char* contract :
+       {"step", "time", "stage", "axial_strain", "lateral_strain", "volumetric_strain", "sigma11", "sigma22",
+        "sigma12", "sigma21", "p", "q", "phi_mob_deg", "void_ratio", "coordination", "contacts", "a_c",
+        "theta_c_deg", "a_n", "theta_n_deg", "a_t", "theta_t_deg", "a_w", "a_ln", "theta_ln_deg", "a_lt",
+        "theta_lt_deg", "theta_sigma_macro_deg", "theta_sigma_micro_deg", "theta_sigma_eq10_deg",
+        "theta_sigma_eq11_deg", "omega_macro_deg", "omega_micro_deg", "kinetic_energy"}) {
+    EXPECT_EQ(std::count(fields.begin(), fields.end(), contract), 1) << contract;
+  }
+  EXPECT_EQ(std::vector<std::string>(fields.begin(), fields.begin() + 3),
+            (std::vector<std::string>{"step", "time", "stage"}));
   const auto row = format.rowObject(s);
   EXPECT_EQ(row["step"], 120);
   EXPECT_EQ(row["stage"], "shearing");
