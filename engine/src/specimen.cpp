@@ -35,7 +35,42 @@ constexpr int kPlacementRounds = 12;
 // the ring disc radius: the ring starts just clear of every particle.
 constexpr double kRingClearance = 0.01;
 
+// Never denser than the consolidated specimen, so compaction always shrinks the ring.
+double firstPlacementFraction(const SpecimenRecipe& recipe) {
+  const bool discs = recipe.shape == SpecimenRecipe::Shape::Disc;
+  return std::min(discs ? kDiscPlacementFraction : kPolygonPlacementFraction, 1 / (1 + recipe.targetVoidRatio));
+}
+
+// The boundary ring around a placement circle of radius `placementRadius`.
+struct RingLayout {
+  double discRadius = 0;  // m
+  double radius = 0;      // m, of the disc centres
+  int count = 0;
+};
+RingLayout layoutRing(const SpecimenRecipe& recipe, const specimen::SpecimenPlan& plan, double placementRadius) {
+  double smallestWidth = INFINITY;
+  for (const SizeClass& c : plan.classes) {
+    if (c.count > 0) smallestWidth = std::min(smallestWidth, c.minWidth);
+  }
+  RingLayout ring;
+  // Automatic ring discs are as wide as the narrowest particle: never so big that a
+  // particle nests deep in the cusp between two of them.
+  ring.discRadius = recipe.boundaryRadius > 0 ? recipe.boundaryRadius : 0.5 * smallestWidth;
+  ring.radius = placementRadius + (1 + kRingClearance) * ring.discRadius;
+  specimen::RingPath path;
+  const double solidFraction = 1 / (1 + recipe.targetVoidRatio);
+  path.consolidatedRadius = std::sqrt(plan.solidArea / (kPi * solidFraction)) + ring.discRadius;
+  ring.count = specimen::ringDiscCount(ring.radius, ring.discRadius, path);
+  return ring;
+}
+
 }  // namespace
+
+int plannedParticleCount(const SpecimenRecipe& recipe) {
+  const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
+  const double placementRadius = std::sqrt(plan.solidArea / (kPi * firstPlacementFraction(recipe)));
+  return plan.count + layoutRing(recipe, plan, placementRadius).count;
+}
 
 Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
   const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
@@ -67,9 +102,7 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
     }
   }
 
-  const double solidFraction = 1 / (1 + recipe.targetVoidRatio);
-  // Never denser than the consolidated specimen, so compaction always shrinks the ring.
-  double placementFraction = std::min(discs ? kDiscPlacementFraction : kPolygonPlacementFraction, solidFraction);
+  double placementFraction = firstPlacementFraction(recipe);
   double placementRadius = 0;
   std::optional<std::vector<Vec2>> placed;
   for (int round = 0; round < kPlacementRounds && !placed; ++round, placementFraction *= kLoosenFactor) {
@@ -97,28 +130,18 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
     out.particles.push_back(std::move(p));
   }
 
-  double smallestWidth = INFINITY;
-  for (const SizeClass& c : plan.classes) {
-    if (c.count > 0) smallestWidth = std::min(smallestWidth, c.minWidth);
-  }
-  // Automatic ring discs are as wide as the narrowest particle: never so big that a
-  // particle nests deep in the cusp between two of them.
-  const double ringDisc = recipe.boundaryRadius > 0 ? recipe.boundaryRadius : 0.5 * smallestWidth;
-  const double ringRadius = placementRadius + (1 + kRingClearance) * ringDisc;
-  specimen::RingPath path;
-  path.consolidatedRadius = std::sqrt(plan.solidArea / (kPi * solidFraction)) + ringDisc;
-  const int ringCount = specimen::ringDiscCount(ringRadius, ringDisc, path);
-  for (int k = 0; k < ringCount; ++k) {
-    const double t = 2 * kPi * k / ringCount;
+  const RingLayout ring = layoutRing(recipe, plan, placementRadius);
+  for (int k = 0; k < ring.count; ++k) {
+    const double t = 2 * kPi * k / ring.count;
     ParticleSpec p;
     p.shape = ShapeKind::Disc;
-    p.radius = ringDisc;
-    p.position = Vec2(ringRadius * std::cos(t), ringRadius * std::sin(t));
+    p.radius = ring.discRadius;
+    p.position = Vec2(ring.radius * std::cos(t), ring.radius * std::sin(t));
     p.motion = Motion::Kinematic;
     p.boundary = true;
     out.particles.push_back(std::move(p));
   }
-  out.initialRingRadius = ringRadius;
+  out.initialRingRadius = ring.radius;
   return out;
 }
 

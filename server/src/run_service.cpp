@@ -13,6 +13,7 @@
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/specimen.hpp"
 #include "api_types.hpp"
 #include "live_run.hpp"
 #include "outgoing.hpp"
@@ -75,34 +76,8 @@ std::string isoTime(double unixSeconds) {
 
 int estimateParticles(const Scene& scene) {
   double count = static_cast<double>(scene.particles.size());
-  if (scene.assembly) {
-    const SpecimenRecipe& r = *scene.assembly;
-    double smallest = 0;  // the smallest particle size, m
-    if (r.shape == SpecimenRecipe::Shape::Disc) {
-      smallest = 2 * r.discRadius;
-    } else if (!r.longAxes.empty()) {
-      smallest = *std::min_element(r.longAxes.begin(), r.longAxes.end()) / std::max(r.aspectRatio, 1.0);
-    }
-    if (r.particleCount) {
-      count += *r.particleCount;
-    } else {
-      // Solid area of the specimen over a particle's mean area.
-      const double solid = kPi * r.specimenDiameter * r.specimenDiameter / 4 / (1 + r.targetVoidRatio);
-      double mean = 0;
-      if (r.shape == SpecimenRecipe::Shape::Disc) {
-        mean = discArea(r.discRadius);
-      } else if (!r.longAxes.empty()) {
-        // A regular n-gon inscribed in the ellipse L × L/aspect.
-        const int n = std::clamp(r.vertices, 3, kMaxPolygonVertices);
-        const double inscribed = n / (2 * kPi) * std::sin(2 * kPi / n);
-        for (double L : r.longAxes) mean += kPi / 4 * L * L / std::max(r.aspectRatio, 1.0) * inscribed;
-        mean /= static_cast<double>(r.longAxes.size());
-      }
-      if (mean > 0) count += solid / mean;
-    }
-    const double ring = r.boundaryRadius > 0 ? r.boundaryRadius : smallest / 2;
-    if (ring > 0) count += kPi * (r.specimenDiameter + 2 * ring) / (2 * ring);
-  }
+  // The generator's own plan (the scene parsed, so the recipe is valid).
+  if (scene.assembly) count += plannedParticleCount(*scene.assembly);
   return static_cast<int>(std::min(count, 2e9));
 }
 

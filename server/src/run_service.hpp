@@ -104,8 +104,8 @@ class RunService {
 double unixNow();
 /// "2025-01-31T12:00:00.123Z".
 std::string isoTime(double unixSeconds);
-/// Particles the scene will have: explicit ones plus the generated specimen (its count if
-/// given, else estimated from its size and grading) and its boundary ring.
+/// Particles the scene will have: explicit ones plus the generated specimen and its boundary
+/// ring, as the generator plans them (plannedParticleCount).
 int estimateParticles(const Scene& scene);
 
 }  // namespace grainlab::server

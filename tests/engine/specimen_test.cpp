@@ -600,3 +600,28 @@ TEST(SpecimenJson, GeneratorRejectsABadRecipeBuiltInCode) {
 
 }  // namespace
 }  // namespace grainlab
+
+namespace grainlab {
+namespace {
+
+// The planned count (the server's particle limit) is the generator's, for discs, random and
+// bedded polygons, and recipes of a given count and of a given size, over several seeds.
+TEST(SpecimenPlan, PlannedCountIsTheGeneratedCount) {
+  const std::vector<nlohmann::json> recipes = {
+      {{"shape", "disc"}, {"disc_radius", 0.002}, {"specimen_diameter", 0.06}},
+      {{"shape", "disc"}, {"disc_radius", 0.001}, {"specimen_diameter", 0.03}, {"particle_count", 150}},
+      {{"shape", "elongated"}, {"specimen_diameter", 0.06}},
+      {{"shape", "elongated"}, {"specimen_diameter", 0.05}, {"orientation", "bedding"}, {"bedding_angle_deg", 30}},
+  };
+  for (const nlohmann::json& json : recipes) {
+    const SpecimenRecipe recipe = parseSpecimenRecipe(json, "assembly");
+    for (std::uint64_t seed : {1, 2, 3}) {
+      const Specimen s = generateSpecimen(recipe, seed);
+      EXPECT_EQ(plannedParticleCount(recipe), static_cast<int>(s.particles.size())) << json.dump() << " seed " << seed;
+      EXPECT_GT(s.specimenCount, 100);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace grainlab

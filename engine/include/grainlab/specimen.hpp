@@ -40,6 +40,11 @@ struct Specimen {
 
 /// Deterministic for a given recipe and seed.
 Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed);
+/// The particles generateSpecimen(recipe, any seed) makes, without placing them: the
+/// specimen's exactly, and the ring's for the first placement circle (a packing that must
+/// be placed in a looser circle gets a few more ring discs). For limits checked before a
+/// run is built (the server's --max-particles). Throws SceneError as generateSpecimen does.
+int plannedParticleCount(const SpecimenRecipe& recipe);
 
 /// Parses the scene's "assembly" object; errors name the field under `path` (e.g.
 /// "assembly.vertices") through SceneError. Unknown keys are errors.
