@@ -20,6 +20,7 @@
 #include "grainlab/report/parallel_runs.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/thread_cpu_clock.hpp"
 #include "tradeoff_metrics.hpp"
 #include "tradeoff_plot.hpp"
 #include "tradeoff_sweep.hpp"
@@ -29,14 +30,6 @@ namespace {
 
 using tradeoff::Setting;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// CPU seconds of the calling thread: unlike wall time, not inflated by other programs on a
-// shared machine.
-double threadCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 // Keeps the shearing stage's samples of one run, nothing else.
 class ShearingRecorder : public RunObserver {

@@ -14,6 +14,7 @@
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/specimen.hpp"
+#include "grainlab/thread_cpu_clock.hpp"
 #include "api_types.hpp"
 #include "live_run.hpp"
 #include "outgoing.hpp"
@@ -24,14 +25,6 @@
 
 namespace grainlab::server {
 namespace {
-
-// CPU time of the calling thread. The simulation's own work does not depend on who watches,
-// so its wall time over this is what waiting (for a core, or for anything else) cost it.
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 nlohmann::json orNull(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
