@@ -85,5 +85,10 @@ class Client:
     def cancel(self, run_id):
         return self._json("POST", f"/api/runs/{int(run_id)}/cancel")
 
+    def resume(self, run_id):
+        """Continues a run the server left resumable (interrupted, or stopped at its wall-time
+        limit) from its checkpoint; the run as the server now has it (queued or running)."""
+        return self._json("POST", f"/api/runs/{int(run_id)}/resume")
+
     def delete(self, run_id):
         self._request("DELETE", f"/api/runs/{int(run_id)}")

@@ -44,6 +44,14 @@ class ClientTest(unittest.TestCase):
         cls.server.wait(timeout=30)
         cls.log.close()
 
+    def test_resume_refuses_a_completed_run_by_reason(self):
+        run_id = self.client.submit(PRESET)
+        self.assertEqual(self.client.wait(run_id, timeout=600, poll=0.2)["status"], "completed")
+        with self.assertRaises(grainlab.ServerError) as caught:
+            self.client.resume(run_id)
+        self.assertEqual(caught.exception.status, 409)
+        self.assertIn("no checkpoint", str(caught.exception))
+
     def test_health_and_presets(self):
         self.assertEqual(self.client.health()["status"], "ok")
         self.assertEqual(self.client.presets(), grainlab.presets())
