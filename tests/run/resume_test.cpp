@@ -1,7 +1,7 @@
 // Exact restart: a run stopped (cleanly, at a checkpoint) and resumed, once or twice, writes
 // the same bytes as the same run done without stopping — series.csv, the final particles and
-// contacts, and summary.json apart from its wall-clock figures — for discs and polygons, in
-// the DEM (one and two threads) and Box2D modes. And a checkpoint that cannot be trusted is
+// contacts, summary.json apart from its wall-clock figures, and ParaView frames — for discs
+// and polygons, in the DEM (one and two threads) and Box2D modes. And a checkpoint that cannot be trusted is
 // refused, with the previous good one used instead.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -68,11 +68,13 @@ std::string variantName(const ::testing::TestParamInfo<Resume::ParamType>& info)
   return info.param.name;
 }
 
-Variant variant(const char* name, const char* preset, const char* engine, int threads, double axialStrain) {
+Variant variant(const char* name, const char* preset, const char* engine, int threads, double axialStrain,
+                bool vtk = false) {
   nlohmann::json scene = presetScene(preset);
   scene["solver"]["engine"] = engine;
   scene["solver"]["threads"] = threads;
   scene["stages"].back()["target_axial_strain"] = axialStrain;  // shorter, same physics
+  if (vtk) scene["output"]["vtk"] = true;
   return {name, scene};
 }
 
@@ -110,6 +112,16 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
     EXPECT_TRUE(a == b) << file << " differs after resuming (" << a.size() << " vs " << b.size() << " bytes)";
   }
   EXPECT_EQ(deterministicSummary(whole), deterministicSummary(stopped));
+  if (fs::exists(whole / "vtk")) {  // ParaView frames (output.vtk): the same files, the same bytes
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(whole / "vtk")) {
+      ++files;
+      const fs::path name = entry.path().filename();
+      EXPECT_TRUE(fileBytes(entry.path()) == fileBytes(stopped / "vtk" / name)) << "vtk/" << name.string();
+    }
+    EXPECT_EQ(files, static_cast<std::size_t>(std::distance(fs::directory_iterator(stopped / "vtk"), {})));
+    EXPECT_GT(files, 10u);
+  }
   EXPECT_FALSE(fs::exists(checkpoint)) << "a completed run leaves no checkpoint behind";
   EXPECT_FALSE(fs::exists(checkpoint + ".previous"));
 }
@@ -122,6 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
                       variant("DemDiscsTwoThreads", "circular-quick", "dem", 2, 0.05),
                       variant("DemPolygons", "elongated-random-quick", "dem", 1, 0.03),
                       variant("DemPolygonsTwoThreads", "elongated-random-quick", "dem", 2, 0.01),
+                      variant("DemDiscsWithParaViewFrames", "circular-quick", "dem", 1, 0.1, true),
                       variant("Box2dDiscs", "circular-quick", "box2d", 1, 0.1),
                       variant("Box2dPolygons", "elongated-random-quick", "box2d", 1, 0.03)),
     variantName);
