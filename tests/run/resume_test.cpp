@@ -1,8 +1,8 @@
 // Exact restart: a run stopped (cleanly, at a checkpoint) and resumed, once or twice, writes
 // the same bytes as the same run done without stopping — series.csv, the final particles and
 // contacts, summary.json apart from its wall-clock figures, and ParaView frames — for discs
-// and polygons, in the DEM (one and two threads) and Box2D modes. And a checkpoint that cannot be trusted is
-// refused, with the previous good one used instead.
+// and polygons, in the DEM (one and two threads) and Box2D modes. And a checkpoint that
+// cannot be trusted is refused, with the previous good one used instead.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
