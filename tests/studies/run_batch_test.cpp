@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "grainlab/output_writer.hpp"
+#include "grainlab/run_output.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/studies/cluster.hpp"
 #include "grainlab/studies/run_batch.hpp"
@@ -119,6 +120,46 @@ TEST_F(RunBatchTest, AFailedRunIsRecordedAndRerunLater) {
   EXPECT_EQ(again[1].status, "completed");
   EXPECT_FALSE(again[1].reused);
   EXPECT_TRUE(again[0].reused);
+}
+
+// A stand-in for `grainlab sweep` killed half-way through a run: the run's partial directory
+// holds its outputs so far and a checkpoint (here from a clean stop at 40 %).
+class StopAt : public RunOutput {
+ public:
+  StopAt(const fs::path& dir, const Scene& scene, double at) : RunOutput(dir.string(), scene, nullptr), at_(at) {}
+  void onProgress(double fraction, std::string_view stage, const World& w) override {
+    RunOutput::onProgress(fraction, stage, w);
+    fraction_ = fraction;
+  }
+  bool stopRequested() override { return fraction_ >= at_; }
+
+ private:
+  double at_, fraction_ = 0;
+};
+
+TEST_F(RunBatchTest, ARunKilledHalfWayResumesFromItsCheckpointToTheSameOutputs) {
+  runs_.resize(2);
+  runs_[0].scene["stages"][0]["duration"] = 0.02;  // long enough to stop (polled every 200 steps)
+  const fs::path partial = dir_ / ".run0.partial";
+  fs::create_directories(partial);
+  std::ofstream(partial / kSceneFile) << runs_[0].scene.dump(2) << "\n";
+  const Scene scene = parseScene(runs_[0].scene);
+  {
+    StopAt attempt(partial, scene, 0.4);
+    const CheckpointPolicy policy{(partial / "checkpoint.bin").string(), 1e9, runs_[0].scene.dump()};
+    ASSERT_EQ(runScene(scene, attempt, {}, policy).status, "interrupted");
+  }
+  const std::vector<BatchRunResult> results = run();
+  EXPECT_TRUE(results[0].resumed);
+  EXPECT_FALSE(results[1].resumed) << "a run with no partial directory starts from the beginning";
+  ASSERT_EQ(results[0].status, "completed") << results[0].error;
+  const fs::path direct = dir_ / "direct";
+  OutputWriter writer(direct.string(), nullptr);
+  runScene(scene, writer);
+  for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"})
+    EXPECT_EQ(fileBytes(runs_[0].dir / file), fileBytes(direct / file)) << file;
+  EXPECT_FALSE(fs::exists(runs_[0].dir / "checkpoint.bin")) << "a finished run keeps no checkpoint";
+  EXPECT_FALSE(fs::exists(partial));
 }
 
 TEST_F(RunBatchTest, APartialOrUnreadableDirectoryIsNotAFinishedRun) {

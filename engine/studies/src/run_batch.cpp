@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "batch_execution.hpp"
+#include "grainlab/checkpoint.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/studies/cluster.hpp"
@@ -28,6 +29,9 @@ class ProgressRelay : public RunObserver {
     progress_.advanced(id_, fraction);
   }
   bool cancelRequested() override { return inner_.cancelRequested(); }
+  bool stopRequested() override { return inner_.stopRequested(); }
+  void persistOutput(StateArchive& a) override { inner_.persistOutput(a); }
+  void onResume(const Scene& s, const World& w) override { inner_.onResume(s, w); }
   void onFinish(const RunSummary& s, const World& w) override { inner_.onFinish(s, w); }
 
  private:
@@ -85,14 +89,37 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
   progress.started(run.id);
   BatchRunResult result;
   try {
-    fs::remove_all(work);  // what an interrupted attempt left
-    fs::create_directories(work);
-    writeText(work / kSceneFile, run.scene.dump(2) + "\n");
     const Scene scene = parseScene(run.scene);
-    std::unique_ptr<RunObserver> observer =
-        factory ? factory(run, work) : std::make_unique<RunOutput>(work.string(), scene, nullptr);
-    ProgressRelay relay(*observer, progress, run.id);
-    const RunSummary summary = runScene(scene, relay);
+    // Runs writing what `grainlab run` writes keep a checkpoint in their partial directory:
+    // an attempt killed half-way (a preempted machine) is resumed from it by the next
+    // invocation, with the same outputs. Other observers (a study's own) start over.
+    const std::string checkpoint = (work / "checkpoint.bin").string();
+    const bool resumable = !factory && sameScene(work, run.scene) &&
+                           (fs::exists(checkpoint) || fs::exists(checkpoint + ".previous"));
+    auto startOver = [&] {
+      fs::remove_all(work);  // what an interrupted attempt left
+      fs::create_directories(work);
+      writeText(work / kSceneFile, run.scene.dump(2) + "\n");
+    };
+    auto makeObserver = [&]() -> std::unique_ptr<RunObserver> {
+      return factory ? factory(run, work) : std::make_unique<RunOutput>(work.string(), scene, nullptr);
+    };
+    const CheckpointPolicy policy =
+        factory ? CheckpointPolicy{} : CheckpointPolicy{checkpoint, scene.output.checkpointEverySeconds, run.scene.dump()};
+    RunSummary summary;
+    std::unique_ptr<RunObserver> observer;
+    if (resumable) {
+      observer = makeObserver();
+      ProgressRelay relay(*observer, progress, run.id);
+      summary = resumeRun(checkpoint, relay, policy);
+      result.resumed = !summary.refused;
+    }
+    if (!result.resumed) {  // nothing to resume from, or its checkpoints could not be read
+      startOver();
+      observer = makeObserver();
+      ProgressRelay relay(*observer, progress, run.id);
+      summary = runScene(scene, relay, {}, policy);
+    }
     result.status = summary.status;
     result.error = summary.error;
     result.wallSeconds = summary.wallSeconds;
@@ -107,6 +134,8 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     }
   }
   try {
+    // Under its own name a run is finished: nothing there to resume.
+    for (const char* suffix : {"", ".previous", ".tmp", ".refused"}) fs::remove(work / (std::string("checkpoint.bin") + suffix));
     fs::remove_all(run.dir);  // an earlier failed attempt
     fs::rename(work, run.dir);
   } catch (const std::exception& e) {

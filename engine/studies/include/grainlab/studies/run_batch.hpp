@@ -4,7 +4,9 @@
 // nothing else). A run works in a hidden ".<name>.partial" directory that is renamed into
 // place when it ends, so a directory under its own name always holds a finished run; a run
 // already completed there for the same scene is skipped, so running the same batch again
-// resumes it (and a run whose scene changed is run again).
+// resumes it (and a run whose scene changed is run again). A run killed half-way continues
+// from the checkpoint its partial directory keeps (every output.checkpoint_every_s), with
+// the outputs an uninterrupted run would have written.
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -33,6 +35,7 @@ struct BatchRunResult {
   std::string error;
   double wallSeconds = 0;
   bool reused = false;         ///< completed by an earlier invocation, not run again
+  bool resumed = false;        ///< continued from the checkpoint an interrupted attempt left
 };
 
 /// Builds the observer that writes one run's files into `workDir` (the partial directory).
