@@ -12,17 +12,44 @@
 
 #include "grainlab/presets.hpp"
 #include "grainlab/run.hpp"
+#include "grainlab/world.hpp"
 
 namespace grainlab {
 namespace {
 
 size_t column(const std::string& name) { return seriesColumnIndex(name); }
 
-// Every sample's values, by stage name.
+// Every sample's values, by stage name; and at the end, how many specimen particles lie
+// outside the polygon of the ring's centres (ray casting), which a rotated or sheared ring
+// must still hold in.
 class Recorder : public RunObserver {
  public:
   void onSample(const Sample& s, const World&) override { rows[s.stage].push_back(s.values); }
+  void onFinish(const RunSummary&, const World& world) override {
+    std::vector<Vec2> ring;
+    Vec2 centre = Vec2::Zero();
+    for (int k = 0; k < world.size(); ++k) {
+      if (world.boundaryFlags()[k]) ring.push_back(world.positions()[k]), centre += world.positions()[k];
+    }
+    centre /= static_cast<double>(ring.size());
+    std::sort(ring.begin(), ring.end(), [&](const Vec2& a, const Vec2& b) {
+      return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
+    });
+    for (int k = 0; k < world.size(); ++k) {
+      if (world.boundaryFlags()[k]) continue;
+      const Vec2& p = world.positions()[k];
+      bool inside = false;
+      for (size_t a = 0, b = ring.size() - 1; a < ring.size(); b = a++) {
+        if ((ring[a].y() > p.y()) != (ring[b].y() > p.y()) &&
+            p.x() < (ring[b].x() - ring[a].x()) * (p.y() - ring[a].y()) / (ring[b].y() - ring[a].y()) + ring[a].x()) {
+          inside = !inside;
+        }
+      }
+      escaped += inside ? 0 : 1;
+    }
+  }
   std::map<std::string, std::vector<std::vector<double>>> rows;
+  int escaped = 0;
 };
 
 double axialDiff(double a, double b) {
@@ -35,6 +62,7 @@ Recorder run(const nlohmann::json& scene) {
   const RunSummary summary = runScene(parseScene(scene), r);
   EXPECT_EQ(summary.status, "completed") << summary.error;
   EXPECT_TRUE(summary.notes.empty()) << summary.notes.front();  // no stage stopped at its time limit
+  EXPECT_EQ(r.escaped, 0);
   return r;
 }
 
