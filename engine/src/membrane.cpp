@@ -71,8 +71,8 @@ void Membrane::applyVelocities() {
     return;
   }
   const Eigen::Matrix2d l = velocityGradient();
-  // The ring particles turn with the material (spin w turns a line clockwise in L's sign
-  // convention: ω_z = (L21 − L12)/2 = −w), so a polygonal ring does not slide on itself.
+  // The ring discs turn with the material (ω_z = (L21 − L12)/2 = −w), so under a spin their
+  // surfaces move with the specimen they touch instead of rubbing against it.
   for (int k : ring_) world_.setKinematicVelocity(k, l * (x[k] - centre_), -spin_);
 }
 
