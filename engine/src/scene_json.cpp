@@ -140,8 +140,8 @@ void parseCyclic(JsonReader& r, StageSpec& s) {
 }
 
 // The axial strain path a cyclic stage travels, for its default time limit: 4·amplitude per
-// cycle, or with stress-ratio limits (no strain known beforehand) 0.2 per cycle, more than
-// the quick presets' specimens take between ratios 0.5 apart.
+// cycle, or with stress-ratio limits (no strain known beforehand) 0.2 per cycle: three times
+// the 0.065 per cycle cyclic-circular-quick travelled between ratios −0.2 and 0.3.
 double cyclicPathEstimate(const StageSpec& s) {
   return s.cycles * (s.strainAmplitude ? 4 * *s.strainAmplitude : 0.2);
 }
