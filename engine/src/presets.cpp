@@ -69,7 +69,8 @@ json pathStage(const std::string& path, bool quick) {
   const double rate = quick ? 1.0 : 0.5;
   if (path == "rotation") {
     // One full turn of the strain-rate axes over a deviatoric strain of 0.3 (ε̇1 − ε̇3 × t):
-    // the first ~20° build the stress up from isotropic, the rest is the turning itself.
+    // the first 30-60° build the stress up from isotropic, the rest is the turning itself
+    // (docs/loading-paths.md).
     return {{"type", "rotation"}, {"name", "rotation"}, {"deviatoric_strain_rate", rate},
             {"total_rotation_deg", 360.0}, {"duration", 0.3 / rate}, {"mean_stress", 300e3},
             {"initial_direction_deg", 90.0}};
