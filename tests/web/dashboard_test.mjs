@@ -65,6 +65,12 @@ try {
   check('the final axial strain is hidden for a rotation', !(await page.locator('#field-target_axial_strain').isVisible()));
   await page.fill('#field-total_rotation_deg', '180');
   check('editing the total rotation writes it into the stage', (await stageOf()).total_rotation_deg === 180);
+  // Switching keeps the confining stress and the shearing rate that were set.
+  await page.fill('#field-confining', '200');
+  await page.selectOption('#field-path', 'simple_shear');
+  await page.selectOption('#field-path', 'rotation');
+  check('a new path holds the consolidation pressure', (await page.inputValue('#field-mean_stress')) === '200');
+  await page.fill('#field-confining', '300');
   await page.selectOption('#field-path', 'cyclic');
   check('choosing cyclic shows its amplitude (in %) and cycles', (await page.inputValue('#field-strain_amplitude')) === '1'
     && (await page.inputValue('#field-cycles')) === '3' && (await stageOf()).type === 'cyclic');

@@ -107,10 +107,26 @@ export function scenePath(scene) {
   const stage = scene.stages[k];
   return stage.type === 'biaxial' && stage.lateral === 'constant_volume' ? 'constant_volume' : stage.type;
 }
+// Where each path keeps the stress it holds and its shearing rate: a new path takes over the
+// consolidation pressure and the old path's rate, so switching keeps what was set.
+const HELD_STRESS = { biaxial: 'pressure', rotation: 'mean_stress', cyclic: 'pressure', simple_shear: 'normal_stress' };
+const RATE = { biaxial: 'strain_rate', rotation: 'deviatoric_strain_rate', cyclic: 'strain_rate', simple_shear: 'shear_rate' };
 function applyPath(scene, name) {
   const k = shearingIndex(scene);
   if (k < 0 || !PATH_STAGES[name] || scenePath(scene) === name) return;
-  scene.stages[k] = structuredClone(PATH_STAGES[name]);
+  const old = scene.stages[k];
+  const stage = structuredClone(PATH_STAGES[name]);
+  const confining = scene.stages.find((s) => s.type === 'isotropic')?.pressure ?? old[HELD_STRESS[old.type]];
+  if (confining !== undefined && HELD_STRESS[stage.type] && stage.lateral !== 'constant_volume') {
+    stage[HELD_STRESS[stage.type]] = confining;
+  }
+  const rate = old[RATE[old.type]];
+  if (rate !== undefined) {
+    // A rotation keeps its deviatoric strain per turn (0.3) at the new rate.
+    if (stage.type === 'rotation') stage.duration = Number(((stage.duration * stage[RATE.rotation]) / rate).toPrecision(12));
+    stage[RATE[stage.type]] = rate;
+  }
+  scene.stages[k] = stage;
 }
 const hasAssembly = (scene) => Boolean(scene.assembly);
 const elongated = (scene) => scene.assembly?.shape === 'elongated';
