@@ -74,6 +74,16 @@ try {
   await page.selectOption('#field-path', 'cyclic');
   check('choosing cyclic shows its amplitude (in %) and cycles', (await page.inputValue('#field-strain_amplitude')) === '1'
     && (await page.inputValue('#field-cycles')) === '3' && (await stageOf()).type === 'cyclic');
+  check('an amplitude-limited cyclic stage hides the q/p limits', !(await page.locator('#field-q_over_p_upper').isVisible()));
+  const json = JSON.parse(await page.inputValue('textarea.scene-json'));
+  delete json.stages[2].strain_amplitude;
+  json.stages[2].q_over_p_limits = [-0.1, 0.2];
+  await page.fill('textarea.scene-json', JSON.stringify(json, null, 2));
+  check('a stress-ratio-limited cyclic stage shows its limits', (await page.inputValue('#field-q_over_p_upper')) === '0.2'
+    && (await page.inputValue('#field-q_over_p_lower')) === '-0.1');
+  await page.fill('#field-q_over_p_upper', '0.3');
+  check('editing a q/p limit writes it into the array', JSON.stringify((await stageOf()).q_over_p_limits) === '[-0.1,0.3]',
+    JSON.stringify((await stageOf()).q_over_p_limits));
   await page.selectOption('#field-path', 'simple_shear');
   check('choosing simple shear shows its shear rate and normal stress', await page.locator('#field-shear_rate').isVisible()
     && (await page.inputValue('#field-normal_stress')) === '300' && (await stageOf()).type === 'simple_shear');

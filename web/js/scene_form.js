@@ -179,6 +179,13 @@ export const SCENE_FIELDS = [
     paths: stagePaths(['rotation'], 'initial_direction_deg'), hint: '90° = vertical compression, as the biaxial test',
   },
   { key: 'strain_amplitude', label: 'Axial strain amplitude', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['cyclic'], 'strain_amplitude') },
+  // Shown for a cyclic stage that reverses at stress ratios (set in the JSON instead of the
+  // amplitude): the two limits of (σ22 − σ11)/(σ22 + σ11).
+  ...[0, 1].map((end) => ({
+    key: `q_over_p_${end ? 'upper' : 'lower'}`, label: `${end ? 'Upper' : 'Lower'} q/p limit`, kind: 'number',
+    paths: (scene) => stagePaths(['cyclic'], 'q_over_p_limits')(scene)
+      .filter((path) => Array.isArray(getPath(scene, path))).map((path) => `${path}[${end}]`),
+  })),
   { key: 'cycles', label: 'Cycles', kind: 'integer', paths: stagePaths(['cyclic'], 'cycles') },
   { key: 'shear_rate', label: 'Shear rate γ̇', unit: '1/s', kind: 'number', paths: stagePaths(['simple_shear'], 'shear_rate') },
   { key: 'normal_stress', label: 'Normal stress σ₂₂ held', unit: 'kPa', kind: 'number', factor: 1e3, paths: stagePaths(['simple_shear'], 'normal_stress') },
