@@ -42,7 +42,7 @@ RunContext::~RunContext() = default;
 
 double RunContext::totalWork() const {
   double work = 0;
-  for (const StageSpec& s : scene_.stages) work += s.type == StageSpec::Type::Biaxial ? 4.0 : 1.0;
+  for (const StageSpec& s : scene_.stages) work += isShearing(s.type) ? 4.0 : 1.0;
   return work;
 }
 
@@ -50,7 +50,7 @@ Stage& RunContext::beginStage(size_t index) {
   stageIndex_ = index;
   const StageSpec& spec = scene_.stages[index];
   world_->setFriction(spec.friction.value_or(scene_.material.friction));
-  if (spec.type == StageSpec::Type::Isotropic || spec.type == StageSpec::Type::Biaxial) {
+  if (spec.type == StageSpec::Type::Isotropic || isShearing(spec.type)) {
     sampler_->resetStrainReference();
   }
   stage_ = makeStage(spec, scene_.output, *world_, membrane_.get());
@@ -93,7 +93,7 @@ void RunContext::sample(RunObserver& observer) {
   if (world_->stepCount() == lastSampleStep_) return;  // a stage's end may coincide with a sample
   lastSampleStep_ = world_->stepCount();
   world_->checkHealth();  // a diverged state never reaches the results
-  const double rate = membrane_ ? std::max(std::abs(membrane_->rate11()), std::abs(membrane_->rate22())) : 0.0;
+  const double rate = membrane_ ? membrane_->rateMagnitude() : 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
   sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

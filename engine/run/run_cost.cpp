@@ -49,6 +49,27 @@ RunCost estimateRunCost(const Scene& scene, const World& world) {
         field = stagePath(k, time == s.maxTime ? "max_time" : "strain_rate");
         cost.certainTime += time;
         break;
+      case StageSpec::Type::Rotation:
+        time = std::min(s.maxTime, s.duration);
+        field = stagePath(k, time == s.maxTime ? "max_time" : "duration");
+        cost.certainTime += time;
+        break;
+      case StageSpec::Type::SimpleShear:
+        time = std::min(s.maxTime, s.targetShearStrain / s.shearRate);
+        field = stagePath(k, time == s.maxTime ? "max_time" : "shear_rate");
+        cost.certainTime += time;
+        break;
+      case StageSpec::Type::Cyclic:  // ends at a limit: known in strain, bounded in stress ratio
+        if (s.strainAmplitude) {
+          time = std::min(s.maxTime, 4 * *s.strainAmplitude * s.cycles / s.strainRate);
+          field = stagePath(k, time == s.maxTime ? "max_time" : "cycles");
+          cost.certainTime += time;
+        } else {
+          time = s.maxTime;
+          field = stagePath(k, "max_time");
+          cost.boundedTime += time;
+        }
+        break;
       case StageSpec::Type::Compaction:
       case StageSpec::Type::Isotropic:
         time = s.maxTime;
@@ -57,7 +78,9 @@ RunCost estimateRunCost(const Scene& scene, const World& world) {
         break;
     }
     // The certain stages are what a refusal rests on, so the field is one of theirs.
-    const bool certain = s.type == StageSpec::Type::Free || s.type == StageSpec::Type::Biaxial;
+    const bool certain = s.type == StageSpec::Type::Free || s.type == StageSpec::Type::Biaxial ||
+                         s.type == StageSpec::Type::Rotation || s.type == StageSpec::Type::SimpleShear ||
+                         (s.type == StageSpec::Type::Cyclic && s.strainAmplitude);
     if (certain && time > longest) {
       longest = time;
       longestField = field;

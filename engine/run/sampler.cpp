@@ -1,7 +1,9 @@
 #include "sampler.hpp"
 
 #include <cmath>
+#include <complex>
 
+#include "grainlab/analysis/angles.hpp"
 #include "grainlab/analysis/fabric.hpp"
 #include "grainlab/analysis/stress_direction.hpp"
 #include "grainlab/membrane.hpp"
@@ -14,6 +16,18 @@ namespace {
 const double kMissing = std::nan("");
 
 size_t column(const char* name) { return seriesColumnIndex(name); }
+
+// The major (most compressive) principal direction of the strain rate measured from the
+// ring's motion, in θσ's convention (docs/micromechanics.md): D = −sym(L), compression
+// positive, θ = ½ arg((D11 − D22) + 2i D12). NaN where D has no deviatoric part to speak of
+// (a free stage, or compaction's equal rates, where only rounding would pick a direction).
+double strainRateDirectionDeg(const Eigen::Matrix2d& l) {
+  const double d11 = -l(0, 0), d22 = -l(1, 1), d12 = -0.5 * (l(0, 1) + l(1, 0));
+  const std::complex<double> deviator(d11 - d22, 2 * d12);
+  const double scale = std::abs(d11) + std::abs(d22) + 2 * std::abs(d12);
+  if (!(std::abs(deviator) > 1e-9 * scale)) return kMissing;
+  return analysis::axialDirectionDeg(deviator);
+}
 
 }  // namespace
 
@@ -61,7 +75,8 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
                       cKin = column("kinetic_energy"), cOm10 = column("omega_eq10_deg"),
                       cOm11 = column("omega_eq11_deg"), cF0 = column("f0"), cL0 = column("l0"),
                       cInertial = column("inertial_number"), cElastic = column("elastic_energy"),
-                      cArea = column("area");
+                      cArea = column("area"), cThEps = column("theta_strain_rate_deg"),
+                      cOmEps = column("omega_strain_rate_deg");
   Sample s;
   s.step = world_.stepCount();
   s.time = world_.time();
@@ -94,6 +109,7 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
     v[cVol] = 1 - area / areaRef_;
     lastVoidRatio_ = (area - membrane_->solidArea()) / membrane_->solidArea();
     v[cVoid] = lastVoidRatio_;
+    v[cThEps] = strainRateDirectionDeg(membrane_->measuredVelocityGradient());
     const StressTensor stress = contactStress(contacts_, world_.positions(), inside_, area);
     v[c11] = stress.s11;
     v[c22] = stress.s22;
@@ -104,7 +120,7 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
     if (stress.p() > 0) {
       const double phi = analysis::phiMobDeg(stress);
       v[cPhi] = phi;
-      if (stage.type == StageSpec::Type::Biaxial) peakPhiMob_ = std::max(peakPhiMob_, phi);
+      if (isShearing(stage.type)) peakPhiMob_ = std::max(peakPhiMob_, phi);
       // I = ε̇ d √(ρ/p): below ~1e-3 the shearing is quasi-static.
       v[cInertial] = std::abs(strainRate) * meanDiameter_ * std::sqrt(world_.material().density / stress.p());
     }
@@ -133,6 +149,7 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
         v[cOmMicro] = d.omega_micro_deg;
         v[cOm10] = d.omega_eq10_deg;
         v[cOm11] = d.omega_eq11_deg;
+        if (!std::isnan(v[cThEps])) v[cOmEps] = analysis::omegaDeg(d.theta_sigma_macro_deg, v[cThEps]);
       }
     }
     if (output_.histograms && contacts > 0) {

@@ -19,7 +19,9 @@ const std::vector<std::string>& seriesColumns() {
       "theta_sigma_eq11_deg", "omega_macro_deg", "omega_micro_deg", "kinetic_energy",
       // extensions
       "omega_eq10_deg", "omega_eq11_deg", "f0", "l0",
-      "inertial_number", "elastic_energy", "area"};
+      "inertial_number", "elastic_energy", "area",
+      // loading paths (docs/loading-paths.md)
+      "theta_strain_rate_deg", "omega_strain_rate_deg"};
   return columns;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/LU>
+
 namespace grainlab {
 
 Membrane::Membrane(World& world) : world_(world) {
@@ -34,20 +36,70 @@ Membrane::Membrane(World& world) : world_(world) {
 void Membrane::setStrainRates(double rate11, double rate22) {
   rate11_ = rate11;
   rate22_ = rate22;
+  rate12_ = 0;
+  spin_ = 0;
+}
+
+void Membrane::setStrainRate(double rate11, double rate22, double rate12, double spin) {
+  rate11_ = rate11;
+  rate22_ = rate22;
+  rate12_ = rate12;
+  spin_ = spin;
+}
+
+double Membrane::rateMagnitude() const {
+  // On the axes, the rates themselves (the paper's path keeps its arithmetic exactly).
+  if (rate12_ == 0) return std::max(std::abs(rate11_), std::abs(rate22_));
+  const double mean = 0.5 * (rate11_ + rate22_);
+  const double radius = std::hypot(0.5 * (rate11_ - rate22_), rate12_);
+  return std::abs(mean) + radius;
+}
+
+Eigen::Matrix2d Membrane::velocityGradient() const {
+  Eigen::Matrix2d l;
+  l << -rate11_, -rate12_ + spin_, -rate12_ - spin_, -rate22_;
+  return l;
 }
 
 void Membrane::applyVelocities() {
   const auto x = world_.positions();
-  for (int k : ring_) {
-    const Vec2 d = x[k] - centre_;
-    world_.setKinematicVelocity(k, Vec2(-rate11_ * d.x(), -rate22_ * d.y()), 0.0);
+  if (rate12_ == 0 && spin_ == 0) {
+    for (int k : ring_) {
+      const Vec2 d = x[k] - centre_;
+      world_.setKinematicVelocity(k, Vec2(-rate11_ * d.x(), -rate22_ * d.y()), 0.0);
+    }
+    return;
   }
+  const Eigen::Matrix2d l = velocityGradient();
+  // The ring discs turn with the material (ω_z = (L21 − L12)/2 = −w), so under a spin their
+  // surfaces move with the specimen they touch instead of rubbing against it.
+  for (int k : ring_) world_.setKinematicVelocity(k, l * (x[k] - centre_), -spin_);
 }
 
 void Membrane::advance(double dt) {
   // Positions moved by x += v dt with v = −ε̇ (x − c): lengths scale by (1 − ε̇ dt) exactly.
   stretch1_ *= 1.0 - rate11_ * dt;
   stretch2_ *= 1.0 - rate22_ * dt;
+  deformation_ = (Eigen::Matrix2d::Identity() + velocityGradient() * dt) * deformation_;
+}
+
+Eigen::Matrix2d Membrane::measuredVelocityGradient() const {
+  const auto x = world_.positions();
+  const auto v = world_.velocities();
+  Vec2 xm = Vec2::Zero(), vm = Vec2::Zero();
+  for (int k : ring_) {
+    xm += x[k];
+    vm += v[k];
+  }
+  xm /= static_cast<double>(ring_.size());
+  vm /= static_cast<double>(ring_.size());
+  Eigen::Matrix2d xx = Eigen::Matrix2d::Zero(), vx = Eigen::Matrix2d::Zero();
+  for (int k : ring_) {
+    const Vec2 dx = x[k] - xm;
+    xx += dx * dx.transpose();
+    vx += (v[k] - vm) * dx.transpose();
+  }
+  return vx * xx.inverse();
 }
 
 double Membrane::enclosedArea() const {

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cyclic_stage.hpp"
 #include "free_stage.hpp"
 #include "grainlab/stages.hpp"
+#include "rotation_stage.hpp"
+#include "simple_shear_stage.hpp"
 
 namespace grainlab {
 namespace {
@@ -39,6 +42,9 @@ constexpr double kMaxInertial = 0.8e-3;
 // and 45% at half a crossing; at one crossing, circular-quick sheared at I = 1e-3 had none
 // within 2%. The DEM's 0.1 crossings would be under one box2d step.
 constexpr double kRigidServoCrossings = 0.25;
+// Constant volume: the area error is corrected over this many stress measurements, a
+// proportional loop on a kinematic boundary (the area answers within the step).
+constexpr double kAreaCorrectionMeasures = 10;
 
 }  // namespace
 
@@ -106,6 +112,8 @@ void BiaxialStage::persist(StateArchive& a) {
   a(stretch2Start_);
   a(sampleStrain_);
   a(meanDiameter_);
+  a(axialRate_);
+  a(areaStart_);
 }
 
 double MembraneStage::servoCrossings(double demCrossings) const {
@@ -118,6 +126,29 @@ double MembraneStage::crossingTime() const {
   const double modulus = 0.5 * world_.contactStiffness();
   const double diameter = 2 * std::sqrt(membrane_.enclosedArea() / kPi);
   return diameter / std::sqrt(modulus / world_.material().density);
+}
+
+void MembraneStage::controlAsShearing() {
+  const double tau = servoCrossings(kShearServoCrossings) * crossingTime();
+  measureEvery_ = std::max(1, static_cast<int>(tau / (kMeasuresPerResponse * world_.timestep())));
+  dtControl_ = measureEvery_ * world_.timestep();
+  double sum = 0;
+  int count = 0;
+  for (int k = 0; k < world_.size(); ++k) {
+    if (!membrane_.inside()[k]) continue;
+    sum += 2 * std::sqrt(world_.area(k) / kPi);
+    ++count;
+  }
+  meanDiameter_ = count ? sum / count : 0;
+}
+
+StressServo MembraneStage::makeShearServo(double target, double maxRate) const {
+  return makeServo(target, maxRate, kShearServoCrossings);
+}
+
+double MembraneStage::quasiStaticRateCap(double floorStress) const {
+  const double p = std::max(stress_.p(), floorStress);
+  return kMaxInertial * std::sqrt(p / world_.material().density) / meanDiameter_;
 }
 
 StressServo MembraneStage::makeServo(double target, double maxRate, double crossings) const {
@@ -192,19 +223,11 @@ void ConsolidationStage::control() {
 
 BiaxialStage::BiaxialStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane)
     : MembraneStage(spec, output, world, membrane),
+      axialRate_(spec.strainRate),
+      sampleStrain_(output.sampleStrain),
       stretch2Start_(membrane.stretch2()),
-      sampleStrain_(output.sampleStrain) {
-  const double tau = servoCrossings(kShearServoCrossings) * crossingTime();
-  measureEvery_ = std::max(1, static_cast<int>(tau / (kMeasuresPerResponse * world.timestep())));
-  dtControl_ = measureEvery_ * world.timestep();
-  double sum = 0;
-  int count = 0;
-  for (int k = 0; k < world.size(); ++k) {
-    if (!membrane.inside()[k]) continue;
-    sum += 2 * std::sqrt(world.area(k) / kPi);
-    ++count;
-  }
-  meanDiameter_ = count ? sum / count : 0;
+      areaStart_(membrane.enclosedArea()) {
+  controlAsShearing();
   // A cap at twice the axial rate (the earlier choice) held the dilating elongated quick
   // specimens 10-23% of the time at the cap, σ11 up to 5% high: they widen at up to 3.5
   // times the axial rate. The cap is the quasi-static bound instead.
@@ -213,13 +236,32 @@ BiaxialStage::BiaxialStage(const StageSpec& spec, const OutputSpec& output, Worl
 
 double BiaxialStage::lateralRateCap() const {
   if (!(meanDiameter_ > 0)) return 2 * spec_.strainRate;
-  const double p = std::max(stress_.p(), spec_.pressure);
-  return kMaxInertial * std::sqrt(p / world_.material().density) / meanDiameter_;
+  return quasiStaticRateCap(spec_.pressure);
+}
+
+double BiaxialStage::constantVolumeRate() const {
+  // The ring's polygon keeps its area when (1 − ε̇11 dt)(1 − ε̇22 dt) = 1; the enclosed area
+  // also loses the ring's perimeter × radius, which grows as the ring turns elliptical, so
+  // the measured area error is fed back as well.
+  const double dt = world_.timestep();
+  const double polygon = -axialRate_ / (1 - axialRate_ * dt);
+  const double error = (membrane_.enclosedArea() - areaStart_) / areaStart_;
+  return polygon + error / (kAreaCorrectionMeasures * dtControl_);
 }
 
 void BiaxialStage::control() {
+  if (spec_.lateral == StageSpec::Lateral::ConstantVolume) {
+    membrane_.setStrainRates(constantVolumeRate(), axialRate_);
+    return;
+  }
   servo11_.maxRate = lateralRateCap();
-  membrane_.setStrainRates(servo11_.rate(stress_.s11, dtControl_), spec_.strainRate);
+  membrane_.setStrainRates(servo11_.rate(stress_.s11, dtControl_), axialRate_);
+}
+
+void BiaxialStage::setAxialRate(double rate) {
+  axialRate_ = rate;
+  const bool volume = spec_.lateral == StageSpec::Lateral::ConstantVolume;
+  membrane_.setStrainRates(volume ? constantVolumeRate() : membrane_.rate11(), axialRate_);
 }
 
 std::unique_ptr<Stage> makeStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane* membrane) {
@@ -228,6 +270,9 @@ std::unique_ptr<Stage> makeStage(const StageSpec& spec, const OutputSpec& output
     case StageSpec::Type::Compaction: return std::make_unique<CompactionStage>(spec, output, world, *membrane);
     case StageSpec::Type::Isotropic: return std::make_unique<ConsolidationStage>(spec, output, world, *membrane);
     case StageSpec::Type::Biaxial: return std::make_unique<BiaxialStage>(spec, output, world, *membrane);
+    case StageSpec::Type::Rotation: return std::make_unique<RotationStage>(spec, output, world, *membrane);
+    case StageSpec::Type::Cyclic: return std::make_unique<CyclicStage>(spec, output, world, *membrane);
+    case StageSpec::Type::SimpleShear: return std::make_unique<SimpleShearStage>(spec, output, world, *membrane);
   }
   return nullptr;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The loading stages of the paper's biaxial test, all driven through the membrane ring:
-// compaction (stage 0), isotropic consolidation (stage 1), biaxial shearing (stage 2).
+// compaction (stage 0), isotropic consolidation (stage 1), biaxial shearing (stage 2), the
+// last also at constant volume. The loading paths beyond it build on MembraneStage in their
+// own files (rotation_stage, cyclic_stage, simple_shear_stage).
 #include <vector>
 
 #include "grainlab/membrane.hpp"
@@ -35,6 +37,14 @@ class MembraneStage : public Stage {
   double crossingTime() const;
   // The response time, in wave crossings, for a servo the DEM runs at `demCrossings`.
   double servoCrossings(double demCrossings) const;
+  /// Shearing stages measure the stress several times per response time of a shearing
+  /// servo (sets measureEvery_, dtControl_) and know the specimen's mean diameter.
+  void controlAsShearing();
+  /// A servo as fast as the biaxial stage's lateral one.
+  StressServo makeShearServo(double target, double maxRate) const;
+  /// The largest strain rate that keeps I = ε̇ d √(ρ/p) at the quasi-static bound, with p
+  /// the measured mean stress but never below `floorStress`.
+  double quasiStaticRateCap(double floorStress) const;
 
   StageSpec spec_;
   World& world_;
@@ -46,6 +56,7 @@ class MembraneStage : public Stage {
   double dtControl_ = 0;  // s between stress measurements
   int stepsSinceMeasure_ = 0;
   bool started_ = false;
+  double meanDiameter_ = 0;  // m, of the specimen particles (equal-area discs); shearing only
   std::vector<ContactRecord> contacts_;
 };
 
@@ -88,6 +99,7 @@ class ConsolidationStage : public MembraneStage {
 /// axial strain. The servo is faster than consolidation's (0.1 wave crossings, the stress
 /// measured 4 times per response time) and the lateral rate is capped where the inertial
 /// number reaches 0.8e-3, not at a multiple of the axial rate (docs/biaxial-test.md).
+/// With "lateral": "constant_volume" the lateral rate keeps the enclosed area instead.
 class BiaxialStage : public MembraneStage {
  public:
   BiaxialStage(const StageSpec& spec, const OutputSpec& output, World& world, Membrane& membrane);
@@ -98,17 +110,25 @@ class BiaxialStage : public MembraneStage {
   double work() const override { return 4.0; }
   void persist(StateArchive& a) override;
 
- private:
+ protected:
   double axialStrain() const { return 1.0 - membrane_.stretch2() / stretch2Start_; }
   void control() override;
+  /// Changes the axial rate at once (a cyclic reversal), the lateral rate kept or, at
+  /// constant volume, matched to it.
+  void setAxialRate(double rate);
+  double axialRate_;       // 1/s, compression positive; the spec's rate until reversed
+  double sampleStrain_;
+
+ private:
   /// The largest lateral rate that keeps I = ε̇ d √(ρ/p) at kMaxInertial, with p the
   /// measured mean stress but never below the held σ11 (p ≥ σ11 while shearing; the floor
   /// keeps a collapse of p from freezing the ring just when it must close in).
   double lateralRateCap() const;
+  /// Constant volume: the lateral rate that keeps the ring's area at its start.
+  double constantVolumeRate() const;
   StressServo servo11_;
   double stretch2Start_;
-  double sampleStrain_;
-  double meanDiameter_ = 0;  // m, of the specimen particles (equal-area discs)
+  double areaStart_;
 };
 
 }  // namespace grainlab

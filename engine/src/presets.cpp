@@ -62,6 +62,49 @@ json paperScene(const std::string& name, const std::string& kind, bool quick) {
           {"output", {{"sample_strain", quick ? 0.005 : 0.002}, {"fabric", true}, {"histograms", true}}}};
 }
 
+// The loading paths of docs/loading-paths.md: the paper's preparation (compaction,
+// consolidation to 300 kPa), then one path in place of the biaxial shearing. The quick ones
+// shear at the quick biaxial preset's rate, so each costs about what it does.
+json pathStage(const std::string& path, bool quick) {
+  const double rate = quick ? 1.0 : 0.5;
+  if (path == "rotation") {
+    // One full turn of the strain-rate axes over a deviatoric strain of 0.3 (ε̇1 − ε̇3 × t):
+    // the first 30-60° build the stress up from isotropic, the rest is the turning itself
+    // (docs/loading-paths.md).
+    return {{"type", "rotation"}, {"name", "rotation"}, {"deviatoric_strain_rate", rate},
+            {"total_rotation_deg", 360.0}, {"duration", 0.3 / rate}, {"mean_stress", 300e3},
+            {"initial_direction_deg", 90.0}};
+  }
+  if (path == "cyclic") {
+    return {{"type", "cyclic"}, {"name", "cyclic"}, {"pressure", 300e3}, {"strain_rate", rate},
+            {"strain_amplitude", 0.01}, {"cycles", 3}};
+  }
+  if (path == "simple-shear") {
+    return {{"type", "simple_shear"}, {"name", "simple shear"}, {"shear_rate", rate}, {"normal_stress", 300e3},
+            {"target_shear_strain", 0.3}};
+  }
+  return {{"type", "biaxial"}, {"name", "constant volume"}, {"lateral", "constant_volume"}, {"strain_rate", rate},
+          {"target_axial_strain", 0.2}};
+}
+
+json pathScene(const std::string& name, const std::string& path, const std::string& kind, bool quick) {
+  json scene = paperScene(name, kind, quick);
+  scene["stages"][2] = pathStage(path, quick);
+  return scene;
+}
+
+// Each path on the circular specimen, and the rotation also on the elongated random one
+// (the non-coaxiality the paper finds there is the question a rotation asks further).
+const std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& pathPresets() {
+  static const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> presets{
+      {"rotation-circular", {"rotation", "circular"}},
+      {"rotation-elongated-random", {"rotation", "random"}},
+      {"cyclic-circular", {"cyclic", "circular"}},
+      {"simple-shear-circular", {"simple-shear", "circular"}},
+      {"constant-volume-circular", {"constant-volume", "circular"}}};
+  return presets;
+}
+
 // A pile of discs settling under gravity in a box: the demo, and the speed benchmark's scene.
 json demoPile() {
   json particles = json::array();
@@ -100,6 +143,8 @@ std::vector<std::string> presetNames() {
   std::vector<std::string> names;
   for (const auto& p : paperPresets()) names.push_back(p.first);
   for (const auto& p : paperPresets()) names.push_back(p.first + "-quick");
+  for (const auto& p : pathPresets()) names.push_back(p.first);
+  for (const auto& p : pathPresets()) names.push_back(p.first + "-quick");
   names.push_back("demo-pile");
   return names;
 }
@@ -108,6 +153,10 @@ json presetScene(const std::string& name) {
   for (const auto& [preset, kind] : paperPresets()) {
     if (name == preset) return paperScene(name, kind, false);
     if (name == preset + "-quick") return paperScene(name, kind, true);
+  }
+  for (const auto& [preset, what] : pathPresets()) {
+    if (name == preset) return pathScene(name, what.first, what.second, false);
+    if (name == preset + "-quick") return pathScene(name, what.first, what.second, true);
   }
   if (name == "demo-pile") return demoPile();
   throw SceneError("preset", "unknown preset \"" + name + "\" (grainlab presets lists them)");

@@ -68,10 +68,89 @@ Wall parseWall(const nlohmann::json& j, const std::string& path) {
   return w;
 }
 
+StageSpec::Lateral parseLateral(JsonReader& r) {
+  const std::string lateral = r.choice("lateral", "constant_stress", {"constant_stress", "constant_volume"});
+  return lateral == "constant_volume" ? StageSpec::Lateral::ConstantVolume : StageSpec::Lateral::ConstantStress;
+}
+
+// The rotation's speed and length: two of rotation_rate_deg_per_s, total_rotation_deg and
+// duration; the third follows.
+void parseRotation(JsonReader& r, StageSpec& s) {
+  if (!r.has("deviatoric_strain_rate")) {
+    throw SceneError(r.fieldPath("deviatoric_strain_rate"), "a rotation stage needs a deviatoric_strain_rate (ε̇1 − ε̇3, 1/s)");
+  }
+  s.deviatoricStrainRate = r.number("deviatoric_strain_rate", 0, 0, kInf, true);
+  s.pressure = r.number("mean_stress", 300e3, 0, kInf, true);
+  s.initialDirectionDeg = r.number("initial_direction_deg", 90, -kInf, kInf);
+  const bool rate = r.has("rotation_rate_deg_per_s"), total = r.has("total_rotation_deg"), duration = r.has("duration");
+  if (rate + total + duration < 2) {
+    const std::string missing = rate ? "duration" : total ? "duration" : "rotation_rate_deg_per_s";
+    throw SceneError(r.fieldPath(missing),
+                     "a rotation stage needs rotation_rate_deg_per_s with total_rotation_deg or a duration, or "
+                     "total_rotation_deg with a duration");
+  }
+  if (rate && total && duration) {
+    throw SceneError(r.fieldPath("duration"),
+                     "give two of rotation_rate_deg_per_s, total_rotation_deg and duration, not all three");
+  }
+  if (rate) {
+    s.rotationRateDeg = r.number("rotation_rate_deg_per_s", 0, -kInf, kInf);
+    if (s.rotationRateDeg == 0) throw SceneError(r.fieldPath("rotation_rate_deg_per_s"), "must not be zero");
+  }
+  if (total) {
+    const double degrees = r.number("total_rotation_deg", 0, -kInf, kInf);
+    if (degrees == 0) throw SceneError(r.fieldPath("total_rotation_deg"), "must not be zero");
+    if (rate && (degrees > 0) != (s.rotationRateDeg > 0)) {
+      throw SceneError(r.fieldPath("total_rotation_deg"), "has the opposite sign of rotation_rate_deg_per_s");
+    }
+    if (rate) s.duration = degrees / s.rotationRateDeg;
+    else {
+      s.duration = r.number("duration", 0, 0, kInf, true);
+      s.rotationRateDeg = degrees / s.duration;
+    }
+  } else {
+    s.duration = r.number("duration", 0, 0, kInf, true);
+  }
+}
+
+// The cyclic stage: the biaxial stage's fields, and one kind of limit.
+void parseCyclic(JsonReader& r, StageSpec& s) {
+  s.pressure = r.number("pressure", 300e3, 0, kInf, true);
+  s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
+  s.lateral = parseLateral(r);
+  const bool amplitude = r.has("strain_amplitude"), limits = r.has("q_over_p_limits");
+  if (amplitude == limits) {
+    throw SceneError(r.fieldPath("strain_amplitude"),
+                     amplitude ? "give strain_amplitude or q_over_p_limits, not both"
+                               : "a cyclic stage needs strain_amplitude or q_over_p_limits");
+  }
+  if (amplitude) s.strainAmplitude = r.number("strain_amplitude", 0, 0, 0.5, true);
+  if (limits) {
+    const std::string field = r.fieldPath("q_over_p_limits");
+    const Vec2 l = parseVec2(r.raw("q_over_p_limits"), field);
+    // (σ22 − σ11)/(σ22 + σ11) lies in (−1, 1) for a specimen in compression, and loading
+    // starts by compressing axis 2 from about 0.
+    if (!(l.x() < l.y())) throw SceneError(field, "must be [lower, upper] with lower < upper");
+    if (!(l.x() > -1) || !(l.y() < 1)) throw SceneError(field, "both limits must lie strictly between -1 and 1");
+    if (!(l.y() > 0)) throw SceneError(field, "the upper limit must be above 0: the first half cycle compresses axis 2");
+    s.qOverPLimits = std::make_pair(l.x(), l.y());
+  }
+  if (!r.has("cycles")) throw SceneError(r.fieldPath("cycles"), "a cyclic stage needs a number of cycles");
+  s.cycles = static_cast<int>(r.integer("cycles", 1, 1, 10000));
+}
+
+// The axial strain path a cyclic stage travels, for its default time limit: 4·amplitude per
+// cycle, or with stress-ratio limits (no strain known beforehand) 0.2 per cycle: three times
+// the 0.065 per cycle cyclic-circular-quick travelled between ratios −0.2 and 0.3.
+double cyclicPathEstimate(const StageSpec& s) {
+  return s.cycles * (s.strainAmplitude ? 4 * *s.strainAmplitude : 0.2);
+}
+
 StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
   JsonReader r(j, path);
   StageSpec s;
-  const std::string type = r.choice("type", "free", {"free", "compaction", "isotropic", "biaxial"});
+  const std::string type =
+      r.choice("type", "free", {"free", "compaction", "isotropic", "biaxial", "rotation", "cyclic", "simple_shear"});
   s.name = r.string("name", type);
   if (type == "free") {
     s.type = StageSpec::Type::Free;
@@ -90,19 +169,38 @@ StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
     s.pressure = r.number("pressure", 300e3, 0, kInf, true);
     s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
     if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
-  } else {
+  } else if (type == "biaxial") {
     s.type = StageSpec::Type::Biaxial;
     s.pressure = r.number("pressure", 300e3, 0, kInf, true);
     s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
     s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
+    s.lateral = parseLateral(r);
+    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  } else if (type == "rotation") {
+    s.type = StageSpec::Type::Rotation;
+    parseRotation(r, s);
+    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  } else if (type == "cyclic") {
+    s.type = StageSpec::Type::Cyclic;
+    parseCyclic(r, s);
+    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  } else {
+    s.type = StageSpec::Type::SimpleShear;
+    if (!r.has("shear_rate")) throw SceneError(r.fieldPath("shear_rate"), "a simple_shear stage needs a shear_rate γ̇ in 1/s");
+    s.shearRate = r.number("shear_rate", 0, 0, kInf, true);
+    s.pressure = r.number("normal_stress", 300e3, 0, kInf, true);
+    s.targetShearStrain = r.number("target_shear_strain", 0.2, 0, 2, true);
     if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
   }
   // Every loading stage has a time limit, so a criterion that is never met cannot run forever:
   // compaction and consolidation 1 s of simulated time (about ten times what the presets
-  // need), shearing twice the time its target strain takes.
-  const double defaultMaxTime = s.type == StageSpec::Type::Biaxial ? 2 * s.targetAxialStrain / s.strainRate
-                                : s.type == StageSpec::Type::Free  ? kInf
-                                                                   : 1.0;
+  // need), shearing twice the time its target strain (or rotation) takes.
+  const double defaultMaxTime = s.type == StageSpec::Type::Biaxial      ? 2 * s.targetAxialStrain / s.strainRate
+                                : s.type == StageSpec::Type::Rotation    ? 2 * s.duration
+                                : s.type == StageSpec::Type::SimpleShear ? 2 * s.targetShearStrain / s.shearRate
+                                : s.type == StageSpec::Type::Cyclic      ? 2 * cyclicPathEstimate(s) / s.strainRate
+                                : s.type == StageSpec::Type::Free        ? kInf
+                                                                         : 1.0;
   s.maxTime = r.number("max_time", defaultMaxTime, 0, kInf, true);
   r.finish();
   return s;

@@ -2,7 +2,8 @@
 // run form, watch the particle view, charts and rose diagrams fill while it runs and after,
 // replay it with the strain slider, download its CSV, list and compare it (run by run and as an
 // ensemble's mean with its 95 % band), and get the API's
-// validation error beside the friction field for a negative friction. No console errors.
+// validation error beside the friction field for a negative friction; the loading paths in the
+// form, and a rotation charted against its angle. No console errors.
 import {
   canvasHash, canvasInk, check, finish, launchBrowser, screenshot, startServer, waitUntil, watchConsole,
 } from './harness.mjs';
@@ -47,6 +48,48 @@ try {
   check('the reference fidelity sets the shearing rate for discs (I = 1e-4)', (await page.inputValue('#field-strain_rate')) === '0.266');
   const edited = JSON.parse(await page.inputValue('textarea.scene-json'));
   check('the reference fidelity samples every 0.001 of strain', edited.output?.sample_strain === 0.001, JSON.stringify(edited.output));
+  // The loading paths (docs/loading-paths.md): the form offers each as the shearing stage,
+  // with its own fields.
+  const pathOptions = await page.$$eval('#field-path option', (options) => options.map((o) => o.value));
+  check('the form offers the loading paths', ['biaxial', 'constant_volume', 'rotation', 'cyclic', 'simple_shear']
+    .every((p) => pathOptions.includes(p)), pathOptions.join(' '));
+  check('a paper preset\'s path is the biaxial stage', (await page.inputValue('#field-path')) === 'biaxial');
+  check('a biaxial preset hides the rotation fields', !(await page.locator('#field-deviatoric_strain_rate').isVisible()));
+  const stageOf = async () => JSON.parse(await page.inputValue('textarea.scene-json')).stages[2];
+  await page.selectOption('#field-path', 'rotation');
+  check('choosing rotation puts a rotation stage in the scene', (await stageOf()).type === 'rotation', JSON.stringify(await stageOf()));
+  const rotationFields = ['deviatoric_strain_rate', 'total_rotation_deg', 'rotation_duration', 'mean_stress', 'initial_direction_deg'];
+  const rotationShown = await Promise.all(rotationFields.map((k) => page.locator(`#field-${k}`).isVisible()));
+  check('the rotation stage shows its fields', rotationShown.every(Boolean), rotationFields.join(' ') + ' ' + rotationShown.join(' '));
+  check('the mean stress shows in kPa', (await page.inputValue('#field-mean_stress')) === '300');
+  check('the final axial strain is hidden for a rotation', !(await page.locator('#field-target_axial_strain').isVisible()));
+  await page.fill('#field-total_rotation_deg', '180');
+  check('editing the total rotation writes it into the stage', (await stageOf()).total_rotation_deg === 180);
+  // Switching keeps the confining stress and the shearing rate that were set.
+  await page.fill('#field-confining', '200');
+  await page.selectOption('#field-path', 'simple_shear');
+  await page.selectOption('#field-path', 'rotation');
+  check('a new path holds the consolidation pressure', (await page.inputValue('#field-mean_stress')) === '200');
+  await page.fill('#field-confining', '300');
+  await page.selectOption('#field-path', 'cyclic');
+  check('choosing cyclic shows its amplitude (in %) and cycles', (await page.inputValue('#field-strain_amplitude')) === '1'
+    && (await page.inputValue('#field-cycles')) === '3' && (await stageOf()).type === 'cyclic');
+  check('an amplitude-limited cyclic stage hides the q/p limits', !(await page.locator('#field-q_over_p_upper').isVisible()));
+  const json = JSON.parse(await page.inputValue('textarea.scene-json'));
+  delete json.stages[2].strain_amplitude;
+  json.stages[2].q_over_p_limits = [-0.1, 0.2];
+  await page.fill('textarea.scene-json', JSON.stringify(json, null, 2));
+  check('a stress-ratio-limited cyclic stage shows its limits', (await page.inputValue('#field-q_over_p_upper')) === '0.2'
+    && (await page.inputValue('#field-q_over_p_lower')) === '-0.1');
+  await page.fill('#field-q_over_p_upper', '0.3');
+  check('editing a q/p limit writes it into the array', JSON.stringify((await stageOf()).q_over_p_limits) === '[-0.1,0.3]',
+    JSON.stringify((await stageOf()).q_over_p_limits));
+  await page.selectOption('#field-path', 'simple_shear');
+  check('choosing simple shear shows its shear rate and normal stress', await page.locator('#field-shear_rate').isVisible()
+    && (await page.inputValue('#field-normal_stress')) === '300' && (await stageOf()).type === 'simple_shear');
+  await page.selectOption('#field-path', 'constant_volume');
+  check('choosing constant volume sets the biaxial stage\'s lateral boundary', (await stageOf()).lateral === 'constant_volume'
+    && (await page.inputValue('#field-lateral')) === 'constant_volume');
   // Back to the preset as it is, for the run below.
   await page.selectOption('#preset', 'circular');
   await page.waitForFunction(() => document.querySelector('#field-name')?.value === 'circular');
@@ -73,7 +116,7 @@ try {
   check('the replay slider is enabled once the run has ended', Boolean(replayReady));
 
   const chartPoints = await page.$$eval('.chart-panel', (panels) => panels.map((p) => [p.dataset.chart, Number(p.dataset.points ?? 0)]));
-  check('all six charts are there', chartPoints.length === 6, JSON.stringify(chartPoints));
+  check('all seven charts are there', chartPoints.length === 7, JSON.stringify(chartPoints));
   check('every chart has points of the shearing stage', chartPoints.every(([, n]) => n >= 10), JSON.stringify(chartPoints));
   for (const [key] of chartPoints) {
     const ink = await canvasInk(page, `.chart-panel[data-chart="${key}"] canvas`);
@@ -276,6 +319,30 @@ try {
   });
   check('θ_ln is drawn only where a_ln ≥ 2 × 1.25·√(2/N_c) (0.071 at 2,500 contacts)',
     masked[0] === null && masked[1] === 170 && masked[2] === null, JSON.stringify(masked));
+
+  // ---- a rotation of the principal axes, charted against the rotation angle ----
+  const rotationId = await page.evaluate(async () => {
+    const response = await fetch('/api/runs', { method: 'POST', body: JSON.stringify({ preset: 'rotation-circular-quick' }) });
+    return (await response.json()).id;
+  });
+  const rotationDone = await waitUntil(() => page.evaluate(async (id) =>
+    (await (await fetch(`/api/runs/${id}`)).json()).status === 'completed', rotationId), 180);
+  check('the rotation preset completes', Boolean(rotationDone), `run ${rotationId}`);
+  await page.goto(`${base}/#/run/${rotationId}`);
+  const axesPoints = await waitUntil(() => page.$$eval('.chart-panel[data-chart="principal-axes"]',
+    (p) => (p.length && Number(p[0].dataset.points) >= 150 ? Number(p[0].dataset.points) : null)), 30);
+  check('the principal-axes chart has the rotation\'s samples', Boolean(axesPoints), String(axesPoints));
+  check('a rotation is charted against the rotation angle', (await page.locator('select[aria-label="x axis"]').inputValue()) === 'rotation');
+  const axesInk = await canvasInk(page, '.chart-panel[data-chart="principal-axes"] canvas');
+  check('the principal-axes chart draws θσ, θ_ε̇ and θ_c', axesInk > 0.005, `${(100 * axesInk).toFixed(2)} % inked`);
+  await screenshot(page, '11-rotation');
+  const turned = await page.evaluate(async () => {
+    const { rotationAngle } = await import('/js/chart_specs.js');
+    const columns = { theta_strain_rate_deg: [170, 10, 50, null, 100] };
+    return rotationAngle({ column: (name) => columns[name] ?? null }, [0, 1, 2, 3, 4]);
+  });
+  check('the rotation angle unwraps θ_strain_rate across 180° (170°, 10°, 50°, –, 100° → 0, 20, 60, –, 110)',
+    JSON.stringify(turned) === JSON.stringify([0, 20, 60, null, 110]), JSON.stringify(turned));
 
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
   exitCode = finish();

@@ -1,6 +1,7 @@
 // What the charts plot, as in the paper: strength (φ_mob, σ1 − σ3), volumetric strain, the
 // anisotropy coefficients a_k and directions θ_k (Figs. 7–13), the non-coaxiality ω from the
-// stress and from Eqs. 7, 10 and 11 (Fig. 15), and σ12 − σ21 (Fig. 6), against axial strain.
+// stress and from Eqs. 7, 10 and 11 (Fig. 15), and σ12 − σ21 (Fig. 6), against axial strain;
+// for the loading paths also θσ, θ_ε̇ and θ_c together, against time or the axes' rotation.
 
 // Each plotted quantity is values(table, rows) → one value per row (null for a gap): whole
 // columns at a time, so a 10,000-sample redraw is a few array passes.
@@ -43,9 +44,27 @@ const stressAsymmetry = (table, rows) => {
   return rows.map((i) => (s12[i] === null || s21[i] === null ? null : (s12[i] - s21[i]) / 1000));
 };
 
+/**
+ * How far the principal strain-rate axes have turned since the first of the rows (degrees,
+ * unwrapped): θ_strain_rate is axial, so each step between samples is taken in [−90°, 90°).
+ */
+export const rotationAngle = (table, rows) => {
+  const theta = table.column('theta_strain_rate_deg');
+  if (!theta) return rows.map(() => null);
+  let previous = null;
+  let turned = 0;
+  return rows.map((i) => {
+    if (theta[i] === null) return null;
+    if (previous !== null) turned += ((((theta[i] - previous) % 180) + 270) % 180) - 90;
+    previous = theta[i];
+    return turned;
+  });
+};
+
 export const X_AXES = {
   strain: { label: 'axial strain ε₂₂ (%)', values: column('axial_strain', 100), shearingOnly: true },
   time: { label: 'time (s), all stages', values: column('time'), shearingOnly: false },
+  rotation: { label: 'rotation of the strain-rate axes (°), shearing stage', values: rotationAngle, shearingOnly: true },
 };
 
 export const RUN_CHARTS = [
@@ -90,6 +109,18 @@ export const RUN_CHARTS = [
     axes: [{ label: 'θ_k (°)' }],
   },
   {
+    // The loading paths' chart (docs/loading-paths.md): stress, strain rate and fabric turning
+    // together, or not, through a rotation of the principal axes.
+    key: 'principal-axes',
+    title: 'Principal directions: stress θσ, strain rate θ_ε̇ and fabric θ_c',
+    series: [
+      { label: 'θσ (°)', values: column('theta_sigma_macro_deg') },
+      { label: 'θ_ε̇ (°)', values: column('theta_strain_rate_deg'), dash: [6, 3] },
+      { label: 'θ_c (°)', values: direction('c'), dash: [2, 3] },
+    ],
+    axes: [{ label: 'direction (°)' }],
+  },
+  {
     key: 'omega',
     title: 'Non-coaxiality ω: from the stress and from Eqs. 7, 10, 11',
     series: [
@@ -97,6 +128,7 @@ export const RUN_CHARTS = [
       { label: 'ω Eq. 7 (°)', values: column('omega_micro_deg') },
       { label: 'ω Eq. 10 (°)', values: column('omega_eq10_deg'), dash: [6, 3] },
       { label: 'ω Eq. 11 (°)', values: column('omega_eq11_deg'), dash: [2, 3] },
+      { label: 'θσ − θ_ε̇ (°)', values: column('omega_strain_rate_deg'), dash: [1, 2] },
     ],
     axes: [{ label: 'ω (°)' }],
   },

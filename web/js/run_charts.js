@@ -1,14 +1,17 @@
-// The run's charts against axial strain (the shearing stage, as the paper plots them) or
-// against time (every stage, to watch compaction). Until the person picks one, the x axis is
-// time while the shearing stage has not started and axial strain from its first sample on.
+// The run's charts against axial strain (the shearing stage, as the paper plots them), against
+// the rotation of the strain-rate axes (a rotation stage), or against time (every stage, to
+// watch compaction). Until the person picks one, the x axis is time while the shearing stage
+// has not started and the shearing stage's own axis from its first sample on.
 // Redrawn at most once per animation frame however fast samples arrive.
 import { h } from './dom.js';
 import { ChartPanel } from './chart_panel.js';
 import { RUN_CHARTS, X_AXES, chartDomain } from './chart_specs.js';
 
 export class RunCharts {
-  constructor(parent, shearing) {
+  /** shearingAxis: the x axis to switch to when shearing starts (series_table.js shearingAxis). */
+  constructor(parent, shearing, shearingAxis = 'strain') {
     this.shearing = shearing;
+    this.shearingAxis = shearingAxis;
     this.table = null;
     this.markerRow = null;
     this.pending = 0;
@@ -21,7 +24,8 @@ export class RunCharts {
       },
     },
       h('option', { value: 'strain' }, 'axial strain (shearing stage)'),
-      h('option', { value: 'time' }, 'time (all stages)'));
+      h('option', { value: 'time' }, 'time (all stages)'),
+      h('option', { value: 'rotation' }, 'rotation angle (shearing stage)'));
     this.xSelect.value = 'time';
     this.grid = h('div', { class: 'charts-grid' });
     this.element = h('section', {},
@@ -59,8 +63,8 @@ export class RunCharts {
   draw() {
     if (!this.table) return;
     const table = this.table;
-    if (!this.chosen && this.xSelect.value === 'time' && this.hasShearing(table)) {
-      this.xSelect.value = 'strain';
+    if (!this.chosen && this.xSelect.value === 'time' && this.shearingAxis !== 'time' && this.hasShearing(table)) {
+      this.xSelect.value = this.shearingAxis;
       this.build();  // draws again with the new axis
       return;
     }

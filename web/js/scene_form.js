@@ -76,6 +76,58 @@ function applyFidelity(scene, name) {
 }
 const stagePaths = (types, key) => (scene) =>
   (scene.stages ?? []).flatMap((stage, k) => (types.includes(stage.type) ? [`stages[${k}].${key}`] : []));
+
+/**
+ * The loading paths of docs/loading-paths.md, each the stage that replaces the scene's last
+ * shearing stage when chosen (the values of the quick presets); `constant_volume` is the
+ * biaxial stage with "lateral": "constant_volume".
+ */
+const SHEARING_TYPES = ['biaxial', 'rotation', 'cyclic', 'simple_shear'];
+export const PATH_STAGES = {
+  biaxial: { type: 'biaxial', name: 'shearing', pressure: 300e3, strain_rate: 1.0, target_axial_strain: 0.2 },
+  constant_volume: {
+    type: 'biaxial', name: 'constant volume', lateral: 'constant_volume', strain_rate: 1.0, target_axial_strain: 0.2,
+  },
+  rotation: {
+    type: 'rotation', name: 'rotation', deviatoric_strain_rate: 1.0, total_rotation_deg: 360, duration: 0.3,
+    mean_stress: 300e3, initial_direction_deg: 90,
+  },
+  cyclic: { type: 'cyclic', name: 'cyclic', pressure: 300e3, strain_rate: 1.0, strain_amplitude: 0.01, cycles: 3 },
+  simple_shear: { type: 'simple_shear', name: 'simple shear', shear_rate: 1.0, normal_stress: 300e3, target_shear_strain: 0.3 },
+};
+const shearingIndex = (scene) => {
+  const stages = scene.stages ?? [];
+  for (let k = stages.length - 1; k >= 0; k--) if (SHEARING_TYPES.includes(stages[k]?.type)) return k;
+  return -1;
+};
+/** The scene's loading path: its last shearing stage's type (or 'constant_volume'). */
+export function scenePath(scene) {
+  const k = shearingIndex(scene);
+  if (k < 0) return '';
+  const stage = scene.stages[k];
+  return stage.type === 'biaxial' && stage.lateral === 'constant_volume' ? 'constant_volume' : stage.type;
+}
+// Where each path keeps the stress it holds and its shearing rate: a new path takes over the
+// consolidation pressure and the old path's rate, so switching keeps what was set.
+const HELD_STRESS = { biaxial: 'pressure', rotation: 'mean_stress', cyclic: 'pressure', simple_shear: 'normal_stress' };
+const RATE = { biaxial: 'strain_rate', rotation: 'deviatoric_strain_rate', cyclic: 'strain_rate', simple_shear: 'shear_rate' };
+function applyPath(scene, name) {
+  const k = shearingIndex(scene);
+  if (k < 0 || !PATH_STAGES[name] || scenePath(scene) === name) return;
+  const old = scene.stages[k];
+  const stage = structuredClone(PATH_STAGES[name]);
+  const confining = scene.stages.find((s) => s.type === 'isotropic')?.pressure ?? old[HELD_STRESS[old.type]];
+  if (confining !== undefined && HELD_STRESS[stage.type] && stage.lateral !== 'constant_volume') {
+    stage[HELD_STRESS[stage.type]] = confining;
+  }
+  const rate = old[RATE[old.type]];
+  if (rate !== undefined) {
+    // A rotation keeps its deviatoric strain per turn (0.3) at the new rate.
+    if (stage.type === 'rotation') stage.duration = Number(((stage.duration * stage[RATE.rotation]) / rate).toPrecision(12));
+    stage[RATE[stage.type]] = rate;
+  }
+  scene.stages[k] = stage;
+}
 const hasAssembly = (scene) => Boolean(scene.assembly);
 const elongated = (scene) => scene.assembly?.shape === 'elongated';
 
@@ -95,11 +147,49 @@ export const SCENE_FIELDS = [
   { section: 'Loading' },
   {
     key: 'confining', label: 'Confining stress', unit: 'kPa', kind: 'number', factor: 1e3,
-    paths: stagePaths(['isotropic', 'biaxial'], 'pressure'),
+    paths: stagePaths(['isotropic', 'biaxial', 'cyclic'], 'pressure'),
     hint: 'the consolidation pressure and the shearing stage\'s constant σ₁₁',
   },
-  { key: 'strain_rate', label: 'Axial strain rate', unit: '1/s', kind: 'number', paths: stagePaths(['biaxial'], 'strain_rate') },
+  {
+    key: 'path', label: 'Loading path', kind: 'select',
+    paths: (scene) => (shearingIndex(scene) >= 0 ? [`stages[${shearingIndex(scene)}].type`] : []),
+    options: [['biaxial', 'biaxial, constant σ₁₁ (the paper)'], ['constant_volume', 'biaxial, constant volume'],
+      ['rotation', 'rotation of principal axes'], ['cyclic', 'cyclic biaxial'], ['simple_shear', 'simple shear']],
+    display: scenePath, apply: applyPath,
+    hint: 'replaces the shearing stage (docs/loading-paths.md)',
+  },
+  {
+    key: 'lateral', label: 'Lateral boundary', kind: 'select', paths: stagePaths(['biaxial', 'cyclic'], 'lateral'),
+    options: [['constant_stress', 'constant σ₁₁'], ['constant_volume', 'constant volume (area)']], fallback: 'constant_stress',
+  },
+  { key: 'strain_rate', label: 'Axial strain rate', unit: '1/s', kind: 'number', paths: stagePaths(['biaxial', 'cyclic'], 'strain_rate') },
   { key: 'target_axial_strain', label: 'Final axial strain', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['biaxial'], 'target_axial_strain') },
+  {
+    key: 'deviatoric_strain_rate', label: 'Deviatoric strain rate ε̇₁ − ε̇₃', unit: '1/s', kind: 'number',
+    paths: stagePaths(['rotation'], 'deviatoric_strain_rate'),
+  },
+  {
+    key: 'total_rotation_deg', label: 'Total rotation', unit: '°', kind: 'number', paths: stagePaths(['rotation'], 'total_rotation_deg'),
+    hint: 'counter-clockwise positive; with the duration it sets the rotation rate',
+  },
+  { key: 'rotation_duration', label: 'Duration', unit: 's', kind: 'number', paths: stagePaths(['rotation'], 'duration') },
+  { key: 'mean_stress', label: 'Mean stress held', unit: 'kPa', kind: 'number', factor: 1e3, paths: stagePaths(['rotation'], 'mean_stress') },
+  {
+    key: 'initial_direction_deg', label: 'Initial strain-rate direction', unit: '°', kind: 'number',
+    paths: stagePaths(['rotation'], 'initial_direction_deg'), hint: '90° = vertical compression, as the biaxial test',
+  },
+  { key: 'strain_amplitude', label: 'Axial strain amplitude', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['cyclic'], 'strain_amplitude') },
+  // Shown for a cyclic stage that reverses at stress ratios (set in the JSON instead of the
+  // amplitude): the two limits of (σ22 − σ11)/(σ22 + σ11).
+  ...[0, 1].map((end) => ({
+    key: `q_over_p_${end ? 'upper' : 'lower'}`, label: `${end ? 'Upper' : 'Lower'} q/p limit`, kind: 'number',
+    paths: (scene) => stagePaths(['cyclic'], 'q_over_p_limits')(scene)
+      .filter((path) => Array.isArray(getPath(scene, path))).map((path) => `${path}[${end}]`),
+  })),
+  { key: 'cycles', label: 'Cycles', kind: 'integer', paths: stagePaths(['cyclic'], 'cycles') },
+  { key: 'shear_rate', label: 'Shear rate γ̇', unit: '1/s', kind: 'number', paths: stagePaths(['simple_shear'], 'shear_rate') },
+  { key: 'normal_stress', label: 'Normal stress σ₂₂ held', unit: 'kPa', kind: 'number', factor: 1e3, paths: stagePaths(['simple_shear'], 'normal_stress') },
+  { key: 'target_shear_strain', label: 'Final shear strain γ', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['simple_shear'], 'target_shear_strain') },
   { section: 'Specimen' },
   {
     key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,

@@ -69,9 +69,24 @@ export class SeriesTable {
   }
 }
 
-/** The names of a scene's biaxial (shearing) stages: the rows the paper plots vs axial strain. */
+/**
+ * The names of a scene's shearing stages (biaxial, as the paper, or a loading path): the rows
+ * plotted against axial strain or rotation angle.
+ */
+const SHEARING = ['biaxial', 'rotation', 'cyclic', 'simple_shear'];
 export function shearingStages(scene) {
   const names = new Set();
-  for (const stage of scene?.stages ?? []) if (stage.type === 'biaxial') names.add(stage.name ?? 'biaxial');
+  for (const stage of scene?.stages ?? []) if (SHEARING.includes(stage.type)) names.add(stage.name ?? stage.type);
   return names;
+}
+
+/**
+ * The x axis a scene's shearing reads best against: the rotation angle for a rotation, time
+ * for simple shear (its axial strain stays near zero), axial strain otherwise.
+ */
+export function shearingAxis(scene) {
+  const types = (scene?.stages ?? []).map((stage) => stage.type);
+  if (types.includes('rotation')) return 'rotation';
+  if (types.includes('simple_shear')) return 'time';
+  return 'strain';
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,14 +19,28 @@
 namespace grainlab {
 
 struct StageSpec {
-  enum class Type { Free, Compaction, Isotropic, Biaxial };
+  enum class Type { Free, Compaction, Isotropic, Biaxial, Rotation, Cyclic, SimpleShear };
+  /// What the lateral boundary of a biaxial or cyclic stage holds: σ11, or the area.
+  enum class Lateral { ConstantStress, ConstantVolume };
   Type type = Type::Free;
   std::string name;               ///< as reported in series.csv's `stage` column
-  double duration = 0;            ///< s (free): how long to run
-  double pressure = 0;            ///< Pa: target p (compaction, isotropic); σ11 held (biaxial)
+  double duration = 0;            ///< s (free, rotation): how long to run
+  double pressure = 0;            ///< Pa: target p (compaction, isotropic, rotation's
+                                  ///< mean_stress); σ11 held (biaxial, cyclic); σ22 held
+                                  ///< (simple_shear's normal_stress)
   double strainRate = 0;          ///< 1/s: boundary strain-rate scale (compaction, isotropic
                                   ///< cap) or axial compression rate ε̇22 (biaxial)
   double targetAxialStrain = 0.2; ///< biaxial: stop at this ε22
+  Lateral lateral = Lateral::ConstantStress;  ///< biaxial, cyclic
+  /// rotation: ε̇1 − ε̇3 of the deviatoric strain rate, 1/s (its principal values are ±½ of it)
+  double deviatoricStrainRate = 0;
+  double rotationRateDeg = 0;     ///< rotation: °/s, counter-clockwise positive
+  double initialDirectionDeg = 90;///< rotation: θ_ε̇ at the start (90° = vertical compression)
+  std::optional<double> strainAmplitude;  ///< cyclic: reverse at axial strain ±amplitude
+  std::optional<std::pair<double, double>> qOverPLimits;  ///< cyclic: or at these (σ22−σ11)/(σ22+σ11)
+  int cycles = 1;                 ///< cyclic: a cycle is up to the upper limit and down to the lower
+  double shearRate = 0;           ///< simple_shear: γ̇, 1/s
+  double targetShearStrain = 0.2; ///< simple_shear: stop at this γ
   std::optional<double> friction; ///< overrides material.friction during the stage
   /// compaction: also stop once the void ratio inside the ring is this low (the particles are
   /// close; the pressure end then only catches a packing that jams looser)
@@ -33,6 +48,13 @@ struct StageSpec {
   /// s: the stage ends here even if its criterion is unmet (the parser sets finite defaults)
   double maxTime = std::numeric_limits<double>::infinity();
 };
+
+/// Stages that shear the specimen (the paper's biaxial stage and the loading paths): strains
+/// are measured from their start, and they are the bulk of a run's work.
+inline bool isShearing(StageSpec::Type t) {
+  return t == StageSpec::Type::Biaxial || t == StageSpec::Type::Rotation || t == StageSpec::Type::Cyclic ||
+         t == StageSpec::Type::SimpleShear;
+}
 
 struct BoundarySpec {
   enum class Type { None, Membrane };

@@ -1,5 +1,6 @@
 #pragma once
-// The stages a scene can list (contracts.md): free, compaction, isotropic, biaxial.
+// The stages a scene can list (contracts.md): free, compaction, isotropic, biaxial, and the
+// loading paths rotation, cyclic and simple_shear (docs/loading-paths.md).
 #include <memory>
 
 #include "grainlab/scene.hpp"

@@ -10,7 +10,7 @@ import { ReplaySource } from '../replay_source.js';
 import { RosePanel } from '../rose_panel.js';
 import { RunCharts } from '../run_charts.js';
 import { RunStream } from '../run_stream.js';
-import { SeriesTable, shearingStages } from '../series_table.js';
+import { SeriesTable, shearingAxis, shearingStages } from '../series_table.js';
 
 const RECONNECT_TRIES = 5;
 
@@ -184,7 +184,7 @@ export function runView(root, id) {
       return;
     }
     if (destroyed) return;
-    charts = new RunCharts(below, shearingStages(run.scene));
+    charts = new RunCharts(below, shearingStages(run.scene), shearingAxis(run.scene));
     renderHeader();
     if (TERMINAL_STATUSES.has(run.status)) await startReplay();
     else startLive();
