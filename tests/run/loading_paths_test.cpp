@@ -14,6 +14,8 @@
 #include "grainlab/run.hpp"
 #include "grainlab/world.hpp"
 
+#include "../support/ring_escapees.hpp"
+
 namespace grainlab {
 namespace {
 
@@ -26,27 +28,7 @@ class Recorder : public RunObserver {
  public:
   void onSample(const Sample& s, const World&) override { rows[s.stage].push_back(s.values); }
   void onFinish(const RunSummary&, const World& world) override {
-    std::vector<Vec2> ring;
-    Vec2 centre = Vec2::Zero();
-    for (int k = 0; k < world.size(); ++k) {
-      if (world.boundaryFlags()[k]) ring.push_back(world.positions()[k]), centre += world.positions()[k];
-    }
-    centre /= static_cast<double>(ring.size());
-    std::sort(ring.begin(), ring.end(), [&](const Vec2& a, const Vec2& b) {
-      return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
-    });
-    for (int k = 0; k < world.size(); ++k) {
-      if (world.boundaryFlags()[k]) continue;
-      const Vec2& p = world.positions()[k];
-      bool inside = false;
-      for (size_t a = 0, b = ring.size() - 1; a < ring.size(); b = a++) {
-        if ((ring[a].y() > p.y()) != (ring[b].y() > p.y()) &&
-            p.x() < (ring[b].x() - ring[a].x()) * (p.y() - ring[a].y()) / (ring[b].y() - ring[a].y()) + ring[a].x()) {
-          inside = !inside;
-        }
-      }
-      escaped += inside ? 0 : 1;
-    }
+    escaped = grainlab::testing::particlesOutsideRing(world);
   }
   std::map<std::string, std::vector<std::vector<double>>> rows;
   int escaped = 0;

@@ -89,7 +89,6 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
   progress.started(run.id);
   BatchRunResult result;
   try {
-    const Scene scene = parseScene(run.scene);
     // Runs writing what `grainlab run` writes keep a checkpoint in their partial directory:
     // an attempt killed half-way (a preempted machine) is resumed from it by the next
     // invocation, with the same outputs. Other observers (a study's own) start over.
@@ -101,6 +100,8 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
       fs::create_directories(work);
       writeText(work / kSceneFile, run.scene.dump(2) + "\n");
     };
+    if (!resumable) startOver();  // before parsing: a bad scene's failure is recorded there
+    const Scene scene = parseScene(run.scene);
     auto makeObserver = [&]() -> std::unique_ptr<RunObserver> {
       return factory ? factory(run, work) : std::make_unique<RunOutput>(work.string(), scene, nullptr);
     };
@@ -115,7 +116,7 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
       result.resumed = !summary.refused;
     }
     if (!result.resumed) {  // nothing to resume from, or its checkpoints could not be read
-      startOver();
+      if (resumable) startOver();
       observer = makeObserver();
       ProgressRelay relay(*observer, progress, run.id);
       summary = runScene(scene, relay, {}, policy);
