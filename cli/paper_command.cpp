@@ -49,7 +49,7 @@ int paperCommand(const std::vector<std::string>& args) {
   const report::PaperOutcome outcome = report::runPaper(options, cluster.isRoot() ? &std::cerr : nullptr);
   int failed = 0;
   for (const report::AssemblyResult& a : outcome.runs) {
-    if (a.summary.status == "completed") continue;
+    if (a.summary.status == RunStatus::Completed) continue;
     ++failed;
     std::cerr << "error: " << a.preset << " seed " << a.seed << " " << a.summary.status
               << (a.summary.error.empty() ? "" : ": " + a.summary.error) << "\n";

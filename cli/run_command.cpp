@@ -43,13 +43,13 @@ int report(const RunSummary& summary, const RunOutput& output, const std::string
               << " s (" << 100 * vtk->writeSeconds() / summary.wallSeconds << "% of the run): " << dir << "/vtk/run.pvd\n";
   }
   if (!summary.checkpointError.empty()) std::cerr << "warning: the last checkpoint failed: " << summary.checkpointError << "\n";
-  if (summary.status == "completed") return 0;
+  if (summary.status == RunStatus::Completed) return 0;
   std::cerr << "error: run " << summary.status << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
-  if (summary.status == "interrupted") {
+  if (summary.status == RunStatus::Interrupted) {
     std::cerr << "continue it with: grainlab resume " << dir << "\n";
     return 4;
   }
-  return summary.status == "cancelled" ? 3 : 1;
+  return summary.status == RunStatus::Cancelled ? 3 : 1;
 }
 
 void catchStopSignals() {

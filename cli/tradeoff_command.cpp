@@ -116,7 +116,7 @@ std::vector<Outcome> runAll(const std::vector<nlohmann::json>& scenes, const std
         o.summary = runScene(scene, recorder);
         o.cpuSeconds = threadCpuSeconds() - cpu0;
       } catch (const std::exception& e) {  // a scene the parser refuses: set-up only
-        o.summary.status = "failed";
+        o.summary.status = RunStatus::Failed;
         o.summary.error = e.what();
       }
       o.metrics = tradeoff::measureRun(recorder.samples, o.summary.peakPhiMobDeg, o.summary.voidRatioAfterConsolidation);
@@ -219,7 +219,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
     const Setting& s = settings[runSetting[r]];
     size_t ref = 0;
     while (!(settings[runSetting[ref]].preset == s.preset && settings[runSetting[ref]].axis == "reference")) ++ref;
-    const bool usable = outcome[r].summary.status == "completed" && outcome[ref].summary.status == "completed";
+    const bool usable = outcome[r].summary.status == RunStatus::Completed && outcome[ref].summary.status == RunStatus::Completed;
     errors[r] = usable ? tradeoff::metricErrors(outcome[r].metrics, outcome[ref].metrics)
                        : std::vector<double>(tradeoff::errorNames().size(), kNaN);
     maxAngle[r] = tradeoff::maxAngleErrorDeg(errors[r]);
@@ -269,7 +269,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
     const int vertices = s.vertices > 0 ? s.vertices : presetVertices(s.preset);
     std::vector<report::CsvCell> row{s.preset, s.axis, s.value, s.timestepSafety, s.inertialNumber, o.strainRate,
                                      vertices > 0 ? report::CsvCell(vertices) : report::CsvCell(""),
-                                     s.sampleStrain, s.engine, o.summary.status, o.summary.wallSeconds,
+                                     s.sampleStrain, s.engine, std::string(toString(o.summary.status)), o.summary.wallSeconds,
                                      o.cpuSeconds, static_cast<double>(o.summary.steps), o.summary.particles,
                                      m.inertialNumber, m.kineticEnergy, m.peakPhiMobDeg, m.phiMobAtEndDeg};
     for (double w : m.omegaDeg) row.emplace_back(w);
@@ -313,7 +313,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
   }
   std::cerr << "tradeoff: wrote " << (dir / "tradeoff.csv").string() << " and " << (dir / "pareto.svg").string() << "\n";
   size_t failed = 0;
-  for (const Outcome& o : outcome) failed += o.summary.status != "completed";
+  for (const Outcome& o : outcome) failed += o.summary.status != RunStatus::Completed;
   return failed == 0 ? 0 : 1;
 }
 

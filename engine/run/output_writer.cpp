@@ -39,7 +39,7 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
 
 nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
   nlohmann::json s;
-  s["status"] = summary.status;
+  s["status"] = toString(summary.status);
   if (!summary.error.empty()) s["error"] = summary.error;
   s["wall_seconds"] = summary.wallSeconds;
   s["sample_seconds"] = summary.sampleSeconds;

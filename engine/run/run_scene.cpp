@@ -90,14 +90,14 @@ class RunLoop {
         if (step % kProgressEvery != 0) continue;
         observer_.onProgress((loop.workDone + stage.progress() * stage.work()) / totalWork, stage.name(), world_);
         if (observer_.cancelRequested()) {
-          summary.status = "cancelled";
+          summary.status = RunStatus::Cancelled;
           return;
         }
         stopping = stopping || observer_.stopRequested();
         if (!world_.resumable()) continue;
         if (stopping) {
           checkpoint(loop, summary);
-          summary.status = "interrupted";
+          summary.status = RunStatus::Interrupted;
           return;
         }
         if (!policy_.path.empty() && since(lastCheckpoint_) >= policy_.everySeconds) checkpoint(loop, summary);
@@ -154,7 +154,7 @@ RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer
   try {
     RunLoop(scene, context, observer, policy, start).run(loop, summary, resumed);
   } catch (const std::exception& e) {
-    summary.status = "failed";
+    summary.status = RunStatus::Failed;
     summary.error = e.what();
   }
   summary.steps = world.stepCount();
@@ -163,7 +163,7 @@ RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer
   summary.voidRatioAfterConsolidation = context.voidRatioAfterConsolidation();
   summary.sampleSeconds = context.sampleSeconds();
   summary.wallSeconds = loop.wallBefore + since(start);
-  if (summary.status == "completed") {
+  if (summary.status == RunStatus::Completed) {
     observer.onProgress(1.0, "done", world);
     // A finished run has nothing to resume: its checkpoints would only take space.
     if (!policy.path.empty()) {
@@ -215,7 +215,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   try {
     context = std::make_unique<RunContext>(scene);
   } catch (const std::exception& e) {
-    summary.status = "failed";
+    summary.status = RunStatus::Failed;
     summary.error = e.what();
     return summary;
   }
@@ -228,7 +228,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
     os << cost.field << ": the run would take about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()
        << "), more than the limit of " << humanDuration(limits.maxSeconds) << "; change " << cost.field
        << ", or raise the limit if you mean it";
-    summary.status = "failed";
+    summary.status = RunStatus::Failed;
     summary.refused = true;
     summary.error = os.str();
     summary.wallSeconds = since(start);
@@ -261,7 +261,7 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
     a.section("end");
     a.expectEnd();
   } catch (const std::exception& e) {
-    summary.status = "failed";
+    summary.status = RunStatus::Failed;
     summary.error = e.what();
     summary.refused = true;  // nothing was run or written
     return summary;
@@ -271,7 +271,7 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
   try {
     observer.onResume(scene, world);
   } catch (const std::exception& e) {
-    summary.status = "failed";
+    summary.status = RunStatus::Failed;
     summary.error = e.what();
     summary.refused = true;
     return summary;

@@ -170,7 +170,7 @@ void VtkWriter::onSample(const Sample&, const World& world) {
 
 void VtkWriter::onFinish(const RunSummary& summary, const World& world) {
   // A failed run's state may be non-finite; its last good state is the last sample's frame.
-  if (summary.status != "failed" && world.stepCount() != lastFrameStep_) writeFrame(world);
+  if (summary.status != RunStatus::Failed && world.stepCount() != lastFrameStep_) writeFrame(world);
   if (!frames_.empty()) writeCollection();
 }
 

@@ -40,7 +40,7 @@ class LiveRun {
   StopReason stopReason() const { return static_cast<StopReason>(reason_.load()); }
 
   struct State {
-    std::string status = status::kQueued;
+    RunStatus status = RunStatus::Queued;
     std::string stage;
     double progress = 0;
     std::int64_t steps = 0;

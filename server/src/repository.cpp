@@ -144,7 +144,8 @@ RunRecord readRun(StatementUse& use) {
   r.name = use.textAt(1);
   r.preset = use.textAt(2);
   r.scene = use.textAt(3);
-  r.status = use.textAt(4);
+  // A status this code does not know (a newer server's) reads as failed, not as a crash.
+  r.status = parseRunStatus(use.textAt(4)).value_or(RunStatus::Failed);
   r.error = use.textAt(5);
   r.stage = use.textAt(6);
   r.progress = use.doubleAt(7);
@@ -407,7 +408,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
       use.bindText(":name", run.name)
           .bindText(":preset", run.preset)
           .bindText(":scene", run.scene)
-          .bindText(":status", run.status)
+          .bindText(":status", std::string(toString(run.status)))
           .bind(":particles", run.particles)
           .bind(":created_at", run.createdAt);
       bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
@@ -484,7 +485,7 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
     {
       auto use = w.statement(sql::kFinishRun).use();
       use.bind(":id", id)
-          .bindText(":status", end.status)
+          .bindText(":status", std::string(toString(end.status)))
           .bindText(":error", end.error)
           .bindText(":stage", end.stage)
           .bind(":finished_at", end.finishedAt)

@@ -23,7 +23,7 @@ class Database;
 
 /// How a run ended, as written once by finishRun().
 struct RunEnd {
-  std::string status;
+  RunStatus status = RunStatus::Failed;
   std::string error;
   std::string stage;
   double finishedAt = 0;

@@ -5,27 +5,20 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/run_status.hpp"
+
 namespace grainlab::server {
 
-/// Run states as the API spells them.
-namespace status {
-inline constexpr const char* kQueued = "queued";
-inline constexpr const char* kRunning = "running";
-inline constexpr const char* kCompleted = "completed";
-inline constexpr const char* kFailed = "failed";
-inline constexpr const char* kCancelled = "cancelled";
-inline constexpr const char* kInterrupted = "interrupted";
-/// True for the states a run ends in (an interrupted or failed run may be resumed: it is then
-/// queued again).
-bool isTerminal(const std::string& s);
-}  // namespace status
+/// A run's state is grainlab::RunStatus (grainlab/run_status.hpp): the engine's, the API's and
+/// the database's one vocabulary.
+using grainlab::RunStatus;
 
 struct RunRecord {
   std::int64_t id = 0;
   std::string name;
   std::string preset;              ///< empty unless created from a preset
   std::string scene;               ///< the scene JSON as submitted (or the preset's)
-  std::string status = status::kQueued;
+  RunStatus status = RunStatus::Queued;
   std::string error;               ///< why it failed or was interrupted
   std::string stage;               ///< the stage it is in (or ended in)
   double progress = 0;             ///< 0..1

@@ -107,7 +107,7 @@ void RunService::requeueStored() {
   std::error_code ec;
   std::filesystem::create_directories(checkpointDir_, ec);
   for (const RunRecord& listed : repo_.listRuns()) {
-    if (listed.status == status::kInterrupted && hasCheckpoint(listed.id)) {
+    if (listed.status == RunStatus::Interrupted && hasCheckpoint(listed.id)) {
       if (!options_.resumeInterrupted) {
         std::cerr << "grainlab serve: run " << listed.id << " (" << listed.name << ") was interrupted at step "
                   << listed.steps << "; resume it with POST /api/runs/" << listed.id
@@ -122,9 +122,9 @@ void RunService::requeueStored() {
       }
       continue;
     }
-    if (listed.status != status::kQueued) continue;
+    if (listed.status != RunStatus::Queued) continue;
     RunEnd end;
-    end.status = status::kInterrupted;
+    end.status = RunStatus::Interrupted;
     end.finishedAt = unixNow();
     try {
       const auto record = repo_.findRun(listed.id);  // the list leaves the scenes out
@@ -147,7 +147,7 @@ RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene sce
     live_[id] = run;
   }
   hub_.open(id);
-  hub_.publish(id, makeOutgoing(statusMessage(id, status::kQueued, 0, {}, 0, {}), MessageKind::Status));
+  hub_.publish(id, makeOutgoing(statusMessage(id, RunStatus::Queued, 0, {}, 0, {}), MessageKind::Status));
   const auto submitted = manager_.submit(id, [this, run, resume, scene = std::move(scene)] { execute(run, scene, resume); });
   if (submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
     forget(id);
@@ -208,7 +208,7 @@ std::int64_t RunService::create(const std::string& body) {
 
   record.name = scene.name;
   record.scene = sceneJson.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  record.status = status::kQueued;
+  record.status = RunStatus::Queued;
   record.particles = particles;
   record.estimatedSeconds = cost.certainSeconds();
   record.createdAt = unixNow();
@@ -227,9 +227,10 @@ std::int64_t RunService::create(const std::string& body) {
 
 nlohmann::json RunService::resume(std::int64_t id) {
   const RunRecord record = require(id);
-  if (live(id)) throw ApiError(409, "run " + std::to_string(id) + " is " + record.status + ", not stopped");
-  if (record.status == status::kCompleted || record.status == status::kCancelled || !hasCheckpoint(id))
-    throw ApiError(409, "run " + std::to_string(id) + " (" + record.status + ") has no checkpoint to resume from");
+  const std::string what = "run " + std::to_string(id) + " (" + std::string(toString(record.status)) + ")";
+  if (live(id)) throw ApiError(409, what + " is not stopped");
+  if (record.status == RunStatus::Completed || record.status == RunStatus::Cancelled || !hasCheckpoint(id))
+    throw ApiError(409, what + " has no checkpoint to resume from");
   Scene scene = badSceneAs400([&] { return parseScene(nlohmann::json::parse(record.scene)); }, "(scene)");
   // Committed before the run is live: the database's "interrupted" would otherwise outrank
   // the live state in what GET answers (an ended state in the database wins).
@@ -255,11 +256,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   const std::int64_t id = run->id();
   const double startedAt = unixNow();
   run->update([&](LiveRun::State& s) {
-    s.status = status::kRunning;
+    s.status = RunStatus::Running;
     s.startedAt = startedAt;
   });
   repo_.markStarted(id, startedAt);
-  hub_.publish(id, makeOutgoing(statusMessage(id, status::kRunning, 0, {}, 0, {}), MessageKind::Status));
+  hub_.publish(id, makeOutgoing(statusMessage(id, RunStatus::Running, 0, {}, 0, {}), MessageKind::Status));
 
   StreamObserver::Settings settings;
   settings.framesPerSecond = options_.framesPerSecond;
@@ -270,7 +271,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = threadCpuSeconds();
   if (run->stopRequested()) {
-    summary.status = "cancelled";  // stopped between leaving the queue and starting
+    summary.status = RunStatus::Cancelled;  // stopped between leaving the queue and starting
   } else {
     try {
       WallTimeLimit limit(options_.maxRunSeconds);
@@ -279,16 +280,16 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
       summary = run_(RunRequest{scene, checkpoint, resume}, watched);
-      if (summary.status == "interrupted" && limit.exceeded() && !run->stopRequested()) {
-        summary.status = "failed";
+      if (summary.status == RunStatus::Interrupted && limit.exceeded() && !run->stopRequested()) {
+        summary.status = RunStatus::Failed;
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
                         ", the server's wall-time limit for a run (grainlab serve --max-run-seconds)";
       }
     } catch (const std::exception& e) {
-      summary.status = "failed";
+      summary.status = RunStatus::Failed;
       summary.error = e.what();
     } catch (...) {
-      summary.status = "failed";
+      summary.status = RunStatus::Failed;
       summary.error = "the simulation stopped with an unknown error";
     }
   }
@@ -299,18 +300,17 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 
   RunEnd end;
   end.status = summary.status;
-  if (end.status != status::kCompleted && end.status != status::kFailed && end.status != status::kCancelled &&
-      end.status != status::kInterrupted) {
-    end.error = "the engine reported status '" + end.status + "'";
-    end.status = status::kFailed;
+  if (!hasEnded(end.status)) {
+    end.error = "the engine reported status '" + std::string(toString(end.status)) + "'";
+    end.status = RunStatus::Failed;
   }
   if (!summary.error.empty()) end.error = summary.error;
-  if (end.status == status::kFailed && end.error.empty()) end.error = "the simulation failed";
-  if (end.status == status::kInterrupted && end.error.empty()) {
+  if (end.status == RunStatus::Failed && end.error.empty()) end.error = "the simulation failed";
+  if (end.status == RunStatus::Interrupted && end.error.empty()) {
     end.error = hasCheckpoint(id) ? "the server stopped before the run ended; it can be resumed"
                                   : "the server stopped before the run ended (no checkpoint: it cannot be resumed)";
   }
-  if (end.status == status::kCancelled) removeCheckpoint(id);  // cancelled means not wanted
+  if (end.status == RunStatus::Cancelled) removeCheckpoint(id);  // cancelled means not wanted
   const auto state = run->state();
   end.stage = state.stage;
   end.finishedAt = unixNow();
@@ -318,7 +318,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   end.cpuSeconds = cpu;
   end.steps = summary.steps > 0 ? summary.steps : state.steps;
   end.particles = summary.particles > 0 ? summary.particles : state.particles;
-  if (end.status == status::kCompleted || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
+  if (end.status == RunStatus::Completed || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
 
   if (run->deleted()) {
     // Queued after the run's last writes, so nothing of it is left behind.
@@ -335,7 +335,7 @@ void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& en
   // Runs once the end is durable: whoever sees "completed" finds the whole series stored.
   run->update([&](LiveRun::State& s) {
     s.status = end.status;
-    if (end.status == status::kCompleted) s.progress = 1;
+    if (end.status == RunStatus::Completed) s.progress = 1;
   });
   const auto s = run->state();
   hub_.publish(run->id(), makeOutgoing(statusMessage(run->id(), end.status, s.progress, end.stage,
@@ -370,7 +370,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
     const auto s = run->state();
     // The database lags the live state by up to a second; a terminal state in the database
     // (the commit already happened) wins.
-    if (!status::isTerminal(merged.status)) {
+    if (!hasEnded(merged.status)) {
       merged.status = s.status;
       merged.progress = s.progress;
       merged.stage = s.stage;
@@ -384,7 +384,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       {"id", merged.id},
       {"name", merged.name},
       {"preset", merged.preset.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.preset)},
-      {"status", merged.status},
+      {"status", toString(merged.status)},
       {"progress", merged.progress},
       {"stage", merged.stage},
       {"particles", merged.particles},
@@ -401,7 +401,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
   };
   if (cancelRequested) j["cancel_requested"] = true;
-  j["resumable"] = !live(r.id) && merged.status != status::kCompleted && merged.status != status::kCancelled &&
+  j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);
   if (withScene) {
     auto scene = nlohmann::json::parse(merged.scene, nullptr, false);
@@ -497,11 +497,11 @@ std::string RunService::shapes(std::int64_t id) {
 std::pair<int, nlohmann::json> RunService::cancel(std::int64_t id) {
   auto record = require(id);
   auto run = live(id);
-  if (!run) throw ApiError(409, "run " + std::to_string(id) + " has already ended (" + record.status + ")");
+  if (!run) throw ApiError(409, "run " + std::to_string(id) + " has already ended (" + std::string(toString(record.status)) + ")");
   if (manager_.removeQueued(id)) {
     run->requestStop(StopReason::Cancel);
     RunEnd end;
-    end.status = status::kCancelled;
+    end.status = RunStatus::Cancelled;
     end.finishedAt = unixNow();
     repo_.finishRun(id, end, [this, run, end] { published(run, end); });
     repo_.flush().get();

@@ -23,9 +23,9 @@ std::chrono::steady_clock::duration every(double perSecond) {
 
 }  // namespace
 
-std::string statusMessage(std::int64_t id, const std::string& status, double progress,
+std::string statusMessage(std::int64_t id, RunStatus status, double progress,
                           const std::string& stage, std::int64_t steps, const std::string& error) {
-  nlohmann::json m = {{"type", "status"}, {"id", id},       {"status", status},
+  nlohmann::json m = {{"type", "status"}, {"id", id},       {"status", toString(status)},
                       {"progress", progress}, {"stage", stage}, {"steps", steps}};
   m["error"] = error.empty() ? nlohmann::json(nullptr) : nlohmann::json(error);
   return m.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -111,7 +111,7 @@ void StreamObserver::onProgress(double fraction, std::string_view stage, const W
   if (now - lastProgress_ >= progressInterval_) {
     lastProgress_ = now;
     hub_.publish(run_.id(),
-                 makeOutgoing(statusMessage(run_.id(), status::kRunning, fraction,
+                 makeOutgoing(statusMessage(run_.id(), RunStatus::Running, fraction,
                                             std::string(stage), world.stepCount(), {}),
                               MessageKind::Progress));
   }

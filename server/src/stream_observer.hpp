@@ -19,7 +19,7 @@ class SeriesFormat;
 class StreamHub;
 
 /// {"type":"status","id","status","progress","stage","steps","error"} as text.
-std::string statusMessage(std::int64_t id, const std::string& status, double progress,
+std::string statusMessage(std::int64_t id, RunStatus status, double progress,
                           const std::string& stage, std::int64_t steps, const std::string& error);
 
 class StreamObserver : public RunObserver {

@@ -108,7 +108,7 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     }
     record.preset = preset;
     record.scene = scene;
-    record.status = status::kQueued;  // until finishRun below, in the same queue of writes
+    record.status = RunStatus::Queued;  // until finishRun below, in the same queue of writes
     record.particles = summary.value("particles", 0);
     record.createdAt = unixNow();
     const std::int64_t runId = repo.insertRun(record).get();
@@ -116,8 +116,8 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     const std::vector<SampleRecord> samples = readSeries(runDir / "series.csv");
     for (const SampleRecord& s : samples) repo.appendSample(runId, s);
     RunEnd end;
-    end.status = summary.value("status", std::string(status::kFailed));
-    if (end.status != status::kCompleted && end.status != status::kCancelled) end.status = status::kFailed;
+    end.status = parseRunStatus(summary.value("status", std::string())).value_or(RunStatus::Failed);
+    if (end.status != RunStatus::Completed && end.status != RunStatus::Cancelled) end.status = RunStatus::Failed;
     end.error = summary.value("error", std::string());
     end.stage = samples.empty() ? std::string() : samples.back().stage;
     end.finishedAt = record.createdAt;

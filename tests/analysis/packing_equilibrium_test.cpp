@@ -52,7 +52,7 @@ TEST(PackingEquilibrium, ContactStressIsSymmetricAndEqualsBoundaryStress) {
   j["stages"].push_back({{"type", "free"}, {"name", "rest"}, {"duration", 0.02}});
   j["material"]["local_damping"] = 0.7;
   EquilibriumProbe probe;
-  ASSERT_EQ(runScene(parseScene(j), probe).status, "completed");
+  ASSERT_EQ(runScene(parseScene(j), probe).status, RunStatus::Completed);
   const StressTensor& c = probe.contact;
   const StressTensor& b = probe.boundary;
   const double p = c.p();

@@ -34,8 +34,8 @@ TEST(Determinism, QuickPresetRepeatsBitForBit) {
   Scene scene = parseScene(presetScene("elongated-bedding-30-quick"));
   scene.stages.resize(2);  // compaction and consolidation suffice to exercise everything
   Recorder a, b;
-  ASSERT_EQ(runScene(scene, a).status, "completed");
-  ASSERT_EQ(runScene(scene, b).status, "completed");
+  ASSERT_EQ(runScene(scene, a).status, RunStatus::Completed);
+  ASSERT_EQ(runScene(scene, b).status, RunStatus::Completed);
   EXPECT_EQ(a.hash, b.hash);
   EXPECT_EQ(a.rows, b.rows);
   EXPECT_GT(a.rows.size(), 1000u);
@@ -47,9 +47,9 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
     scene.stages.resize(1);  // compaction: the preset's own membrane and servo, loose still
     scene.stages[0].maxTime = 0.05;
     Recorder serial, parallel;
-    ASSERT_EQ(runScene(scene, serial).status, "completed");
+    ASSERT_EQ(runScene(scene, serial).status, RunStatus::Completed);
     scene.solver.threads = 2;
-    ASSERT_EQ(runScene(scene, parallel).status, "completed");
+    ASSERT_EQ(runScene(scene, parallel).status, RunStatus::Completed);
     EXPECT_EQ(serial.hash, parallel.hash) << preset;
     EXPECT_EQ(serial.rows, parallel.rows) << preset;
   }
@@ -72,11 +72,11 @@ TEST(Determinism, ThreadCountDoesNotChangeABitInAShuffledPile) {
     scene.gravity *= 50;
     scene.stages[0].duration = 0.01;  // s
     Recorder serial;
-    ASSERT_EQ(runScene(scene, serial).status, "completed");
+    ASSERT_EQ(runScene(scene, serial).status, RunStatus::Completed);
     for (int threads : {2, 3}) {
       Recorder parallel;
       scene.solver.threads = threads;
-      ASSERT_EQ(runScene(scene, parallel).status, "completed");
+      ASSERT_EQ(runScene(scene, parallel).status, RunStatus::Completed);
       const std::string what = std::string(polygons ? "polygons, " : "discs, ") + std::to_string(threads) + " threads";
       EXPECT_EQ(serial.hash, parallel.hash) << what;
       EXPECT_EQ(serial.rows, parallel.rows) << what;

@@ -85,7 +85,7 @@ TEST(Extremes, BinaryCollisionFarBeyondCriticalTimestepFailsWithReason) {
     const RunSummary s = runScene(collisionAt(factor), rec);
     EXPECT_FALSE(rec.hasNonFinite()) << factor;
     // Before 274c9fe this run completed with the pair leaving at 135 m/s.
-    ASSERT_EQ(s.status, "failed") << "factor " << factor;
+    ASSERT_EQ(s.status, RunStatus::Failed) << "factor " << factor;
     EXPECT_NE(s.error.find("timestep"), std::string::npos) << s.error;
   }
 }
@@ -98,7 +98,7 @@ TEST(Extremes, PresetWithTimestepSafetyFiveFailsWithReason) {
   j["stages"] = nlohmann::json::array({j["stages"][0], j["stages"][1]});
   Recorder rec;
   const RunSummary s = runScene(parseScene(j), rec);
-  EXPECT_EQ(s.status, "failed");
+  EXPECT_EQ(s.status, RunStatus::Failed);
   EXPECT_NE(s.error.find("timestep"), std::string::npos) << s.error;
   EXPECT_FALSE(rec.hasNonFinite());
 }
@@ -266,7 +266,7 @@ TEST(Extremes, ConsolidationToOneKilopascal) {
   const Scene scene = consolidationTo(p);
   Recorder rec;
   const RunSummary s = runScene(scene, rec);
-  ASSERT_EQ(s.status, "completed") << s.error;
+  ASSERT_EQ(s.status, RunStatus::Completed) << s.error;
   EXPECT_TRUE(s.notes.empty()) << s.notes.front();  // ended on its criterion, not a time limit
   EXPECT_NEAR(rec.lastP, p, 0.01 * p);
   EXPECT_FALSE(rec.hasNonFinite());
@@ -288,10 +288,10 @@ TEST(Extremes, ConsolidationToOneHundredMegapascalsCompletesOrSaysWhy) {
   Recorder rec;
   const RunSummary s = runScene(consolidationTo(p), rec);
   EXPECT_FALSE(rec.hasNonFinite());
-  if (s.status == "completed") {
+  if (s.status == RunStatus::Completed) {
     EXPECT_NEAR(rec.lastP, p, 0.01 * p);
   } else {
-    EXPECT_EQ(s.status, "failed");
+    EXPECT_EQ(s.status, RunStatus::Failed);
     EXPECT_NE(s.error.find("overlap"), std::string::npos) << s.error;
   }
 }
@@ -314,7 +314,7 @@ TEST(Extremes, DiscsStartingSixtyPercentOverlappedAreRefused) {
   EXPECT_FALSE(rec.hasNonFinite());
   // Before 274c9fe the pair was accepted (the first health check saw no pairs yet) and flew
   // apart at 59 m/s.
-  EXPECT_EQ(s.status, "failed");
+  EXPECT_EQ(s.status, RunStatus::Failed);
   EXPECT_NE(s.error.find("runaway overlap"), std::string::npos) << s.error;
   EXPECT_NE(s.error.find("particles 0 and 1"), std::string::npos) << s.error;
 }
@@ -356,7 +356,7 @@ TEST(Extremes, SingleDiscFallsFreelyThroughTheWholeRun) {
   scene.stages = {free};
   Recorder rec;
   const RunSummary s = runScene(scene, rec);
-  ASSERT_EQ(s.status, "completed") << s.error;
+  ASSERT_EQ(s.status, RunStatus::Completed) << s.error;
   EXPECT_EQ(s.particles, 1);
   EXPECT_FALSE(rec.hasNonFinite());
   ASSERT_EQ(rec.finalPositions.size(), 1u);
@@ -381,7 +381,7 @@ TEST(Extremes, SinglePolygonRestsOnAWallThroughTheWholeRun) {
   scene.stages = {free};
   Recorder rec;
   const RunSummary s = runScene(scene, rec);
-  ASSERT_EQ(s.status, "completed") << s.error;
+  ASSERT_EQ(s.status, RunStatus::Completed) << s.error;
   EXPECT_FALSE(rec.hasNonFinite());
   ASSERT_EQ(rec.contacts.size(), 1u);
   EXPECT_NEAR(rec.contacts[0].overlap, m * kG / 1e8, 1e-3 * m * kG / 1e8);

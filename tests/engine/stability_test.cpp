@@ -37,7 +37,7 @@ Scene jammed(double timestepOverCritical) {
 TEST(Stability, TimestepBeyondCriticalFailsWithReasonAndNoNaN) {
   RowCollector rows;
   const RunSummary s = runScene(jammed(3.0), rows);
-  EXPECT_EQ(s.status, "failed");
+  EXPECT_EQ(s.status, RunStatus::Failed);
   EXPECT_NE(s.error.find("timestep"), std::string::npos) << s.error;
   EXPECT_EQ(rows.rows.find("nan"), std::string::npos);
   EXPECT_EQ(rows.rows.find("inf"), std::string::npos);
@@ -45,7 +45,7 @@ TEST(Stability, TimestepBeyondCriticalFailsWithReasonAndNoNaN) {
 
 TEST(Stability, TimestepBelowCriticalCompletes) {
   RowCollector rows;
-  EXPECT_EQ(runScene(jammed(0.2), rows).status, "completed");
+  EXPECT_EQ(runScene(jammed(0.2), rows).status, RunStatus::Completed);
 }
 
 TEST(Stability, CriticalTimestepMatchesTheStiffestLightestContact) {

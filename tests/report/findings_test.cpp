@@ -188,7 +188,7 @@ TEST(OmegaOnsetSign, PositiveAndDecayingHoldsNegativeDoesNot) {
 
 TEST(Findings, FailedOrMissingRunsMakeClaimsInconclusive) {
   AssemblyResult a = syntheticRun(AssemblyKind::Circular);
-  a.summary.status = "failed";
+  a.summary.status = RunStatus::Failed;
   const auto all = evaluateFindings(one(a));
   ASSERT_EQ(all.size(), 8u);
   for (const Finding& f : all) {

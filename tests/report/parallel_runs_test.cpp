@@ -42,8 +42,8 @@ TEST_F(ParallelRuns, ResultsDoNotDependOnHowManyRunAtOnce) {
   const auto alone = executeRuns({planned("circular-quick", 1, dir / "alone")}, 1, nullptr);
   const auto together =
       executeRuns({planned("circular-quick", 1, dir / "together"), planned("demo-pile", 1, dir / "together")}, 2, nullptr);
-  ASSERT_EQ(alone.at(0).status, "completed") << alone[0].error;
-  ASSERT_EQ(together.at(0).status, "completed") << together[0].error;
+  ASSERT_EQ(alone.at(0).status, RunStatus::Completed) << alone[0].error;
+  ASSERT_EQ(together.at(0).status, RunStatus::Completed) << together[0].error;
   EXPECT_EQ(alone[0].steps, together[0].steps);
   const fs::path a = dir / "alone" / "circular-quick" / "seed-1", b = dir / "together" / "circular-quick" / "seed-1";
   EXPECT_EQ(fileBytes(a / "series.csv"), fileBytes(b / "series.csv"));
@@ -52,7 +52,7 @@ TEST_F(ParallelRuns, ResultsDoNotDependOnHowManyRunAtOnce) {
 
   // Read back from its directory, the run gives the report its series and rose snapshots.
   const AssemblyResult back = loadAssemblyResult(a.string(), "circular-quick");
-  EXPECT_EQ(back.summary.status, "completed");
+  EXPECT_EQ(back.summary.status, RunStatus::Completed);
   EXPECT_EQ(back.seed, 1);
   EXPECT_DOUBLE_EQ(back.summary.voidRatioAfterConsolidation, alone[0].voidRatioAfterConsolidation);
   ASSERT_GT(back.shearing.size(), 10u);
@@ -91,7 +91,7 @@ TEST_F(ParallelRuns, IdenticalSeedsGiveAZeroWidthBandDistinctSeedsANarrowingOne)
   std::vector<double> same, different;
   std::vector<AssemblyResult> copyRuns;
   for (size_t k = 0; k < all.size(); ++k) {
-    ASSERT_EQ(summaries[k].status, "completed") << summaries[k].error;
+    ASSERT_EQ(summaries[k].status, RunStatus::Completed) << summaries[k].error;
     (k < copies.size() ? same : different).push_back(summaries[k].voidRatioAfterConsolidation);
     if (k < copies.size()) {
       copyRuns.push_back(loadAssemblyResult(all[k].dir, "circular-quick"));
@@ -134,9 +134,9 @@ TEST_F(ParallelRuns, ABadSceneFailsAloneWithItsReason) {
   bad.scene["material"]["friction"] = -1;
   const auto results = executeRuns({bad, planned("demo-pile", 1, dir / "good")}, 1, nullptr);
   ASSERT_EQ(results.size(), 2u);
-  EXPECT_EQ(results[0].status, "failed");
+  EXPECT_EQ(results[0].status, RunStatus::Failed);
   EXPECT_NE(results[0].error.find("friction"), std::string::npos) << results[0].error;
-  EXPECT_EQ(results[1].status, "completed") << results[1].error;
+  EXPECT_EQ(results[1].status, RunStatus::Completed) << results[1].error;
   EXPECT_THROW(planRuns({"no-such-preset"}, 1, dir.string()), std::exception);
 }
 

@@ -20,7 +20,7 @@ inline AssemblyResult syntheticRun(AssemblyKind kind, double beddingDeg = 0, int
   a.preset = kind == AssemblyKind::Circular ? "circular" : kind == AssemblyKind::Random
                                                                ? "elongated-random"
                                                                : "elongated-bedding-" + std::to_string(static_cast<int>(beddingDeg));
-  a.summary.status = "completed";
+  a.summary.status = RunStatus::Completed;
   a.summary.particles = 2000;
   a.summary.voidRatioAfterConsolidation = 0.27;
   std::vector<double> strain;

@@ -41,7 +41,7 @@ class BiaxialProbe : public RunObserver {
 void checkBiaxial(const std::string& preset, double minWithin) {
   BiaxialProbe probe;
   const RunSummary summary = runScene(parseScene(presetScene(preset)), probe);
-  ASSERT_EQ(summary.status, "completed") << summary.error;
+  ASSERT_EQ(summary.status, RunStatus::Completed) << summary.error;
   EXPECT_TRUE(summary.notes.empty()) << summary.notes.front();  // every stage met its criterion
   EXPECT_GT(summary.voidRatioAfterConsolidation, 0.1);
   EXPECT_LT(summary.voidRatioAfterConsolidation, 0.4);

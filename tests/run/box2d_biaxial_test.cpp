@@ -30,7 +30,7 @@ TEST(Box2dBiaxial, CircularQuickRunsEveryStageWithSigma11Held) {
   scene["solver"]["engine"] = "box2d";
   Probe probe;
   const RunSummary summary = runScene(parseScene(scene), probe);
-  ASSERT_EQ(summary.status, "completed") << summary.error;
+  ASSERT_EQ(summary.status, RunStatus::Completed) << summary.error;
   EXPECT_TRUE(probe.rigid);
   EXPECT_TRUE(summary.notes.empty()) << summary.notes.front();  // every stage met its criterion
   for (const char* stage : {"compaction", "consolidation", "shearing"}) {

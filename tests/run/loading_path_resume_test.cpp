@@ -46,7 +46,7 @@ void checkResume(const std::string& preset, const std::string& stage) {
   fs::remove_all(root);
   {
     OutputWriter whole((root / "whole").string(), nullptr);
-    ASSERT_EQ(runScene(scene, whole).status, "completed");
+    ASSERT_EQ(runScene(scene, whole).status, RunStatus::Completed);
   }
   const std::string checkpoint = (root / "parts" / "checkpoint.bin").string();
   const CheckpointPolicy policy{checkpoint, 1e9, json.dump()};  // only the stop's checkpoint
@@ -54,12 +54,12 @@ void checkResume(const std::string& preset, const std::string& stage) {
     OutputWriter writer((root / "parts").string(), nullptr);
     StopInStage stop(stage, 20);
     ObserverTee tee{&writer, &stop};
-    ASSERT_EQ(runScene(scene, tee, {}, policy).status, "interrupted");
+    ASSERT_EQ(runScene(scene, tee, {}, policy).status, RunStatus::Interrupted);
   }
   {
     OutputWriter writer((root / "parts").string(), nullptr);
     const RunSummary resumed = resumeRun(checkpoint, writer, policy);
-    ASSERT_EQ(resumed.status, "completed") << resumed.error;
+    ASSERT_EQ(resumed.status, RunStatus::Completed) << resumed.error;
   }
   EXPECT_EQ(slurp(root / "parts" / "series.csv"), slurp(root / "whole" / "series.csv")) << preset;
   EXPECT_EQ(slurp(root / "parts" / "particles_final.csv"), slurp(root / "whole" / "particles_final.csv")) << preset;

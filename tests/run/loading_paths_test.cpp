@@ -42,7 +42,7 @@ double axialDiff(double a, double b) {
 Recorder run(const nlohmann::json& scene) {
   Recorder r;
   const RunSummary summary = runScene(parseScene(scene), r);
-  EXPECT_EQ(summary.status, "completed") << summary.error;
+  EXPECT_EQ(summary.status, RunStatus::Completed) << summary.error;
   EXPECT_TRUE(summary.notes.empty()) << summary.notes.front();  // no stage stopped at its time limit
   EXPECT_EQ(r.escaped, 0);
   return r;
@@ -258,7 +258,7 @@ TEST_P(PathInEveryMode, CompletesWithItsBoundaryControlHolding) {
   if (type == "biaxial") path["target_axial_strain"] = 0.03;
   Recorder r;
   const RunSummary summary = runScene(parseScene(scene), r);
-  ASSERT_EQ(summary.status, "completed") << summary.error;
+  ASSERT_EQ(summary.status, RunStatus::Completed) << summary.error;
   EXPECT_EQ(r.escaped, 0);
   const auto& rows = r.rows.at(path["name"].get<std::string>());
   ASSERT_GT(rows.size(), 5u);

@@ -42,7 +42,7 @@ constexpr double kCompactionVoidRatio = 0.40;
 constexpr double kConsolidation = 300e3;  // Pa
 
 void checkCompactionEnd(const Prepared& run) {
-  ASSERT_EQ(run.summary.status, "completed") << run.summary.error;
+  ASSERT_EQ(run.summary.status, RunStatus::Completed) << run.summary.error;
   EXPECT_TRUE(run.summary.notes.empty()) << run.summary.notes.front();
   ASSERT_FALSE(run.compactionEnd.empty());
   // Stopped by the void ratio, not by the pressure backstop. Between two stress

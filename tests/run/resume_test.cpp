@@ -84,27 +84,27 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
   const fs::path whole = root_ / "whole", stopped = root_ / "stopped";
   {
     RunOutput output(whole.string(), scene, nullptr);
-    ASSERT_EQ(runScene(scene, output).status, "completed");
+    ASSERT_EQ(runScene(scene, output).status, RunStatus::Completed);
   }
   const std::string checkpoint = (stopped / "checkpoint.bin").string();
   const CheckpointPolicy policy{checkpoint, 1e9, GetParam().scene.dump()};  // only at the stops
   {
     StoppingOutput output(stopped, scene, 0.05);
     const RunSummary first = runScene(scene, output, {}, policy);
-    ASSERT_EQ(first.status, "interrupted") << first.error;
+    ASSERT_EQ(first.status, RunStatus::Interrupted) << first.error;
     ASSERT_EQ(first.checkpoints, 1);
     ASSERT_TRUE(fs::exists(checkpoint));
   }
   {
     StoppingOutput output(stopped, scene, 0.7);
     const RunSummary second = resumeRun(checkpoint, output, policy);
-    ASSERT_EQ(second.status, "interrupted") << second.error;
+    ASSERT_EQ(second.status, RunStatus::Interrupted) << second.error;
     ASSERT_TRUE(second.resumeNote.empty()) << second.resumeNote;
   }
   {
     RunOutput output(stopped.string(), scene, nullptr);
     const RunSummary last = resumeRun(checkpoint, output, policy);
-    ASSERT_EQ(last.status, "completed") << last.error;
+    ASSERT_EQ(last.status, RunStatus::Completed) << last.error;
   }
   for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"}) {
     const std::string a = fileBytes(whole / file), b = fileBytes(stopped / file);
@@ -147,10 +147,10 @@ class BadCheckpoint : public ::testing::Test {
     scene_ = presetScene("circular-quick");
     const Scene scene = parseScene(scene_);
     StoppingOutput first(dir_, scene, 0.2);
-    ASSERT_EQ(runScene(scene, first, {}, policy()).status, "interrupted");
+    ASSERT_EQ(runScene(scene, first, {}, policy()).status, RunStatus::Interrupted);
     previousPayload_ = readCheckpointFile(path());
     StoppingOutput second(dir_, scene, 0.4);
-    ASSERT_EQ(resumeRun(path(), second, policy()).status, "interrupted");
+    ASSERT_EQ(resumeRun(path(), second, policy()).status, RunStatus::Interrupted);
     ASSERT_NE(readCheckpointFile(path()), previousPayload_);
     ASSERT_EQ(readCheckpointFile(path() + ".previous"), previousPayload_);
   }
@@ -162,7 +162,7 @@ class BadCheckpoint : public ::testing::Test {
   void expectFallback(const std::string& reason) {
     RunOutput output(dir_.string(), parseScene(scene_), nullptr);
     const RunSummary summary = resumeRun(path(), output, {});
-    EXPECT_EQ(summary.status, "completed") << summary.error;
+    EXPECT_EQ(summary.status, RunStatus::Completed) << summary.error;
     EXPECT_NE(summary.resumeNote.find(reason), std::string::npos) << summary.resumeNote;
     EXPECT_NE(summary.resumeNote.find("checkpoint before it"), std::string::npos) << summary.resumeNote;
     EXPECT_EQ(readCheckpointFile(path() + ".previous"), previousPayload_) << "the good checkpoint is kept";
@@ -202,7 +202,7 @@ TEST_F(BadCheckpoint, BothUnreadableFailsTheRunNamingBothAndWritesNothing) {
   const std::string seriesBefore = fileBytes(dir_ / "series.csv");
   RunOutput output(dir_.string(), parseScene(scene_), nullptr);
   const RunSummary summary = resumeRun(path(), output, {});
-  EXPECT_EQ(summary.status, "failed");
+  EXPECT_EQ(summary.status, RunStatus::Failed);
   EXPECT_NE(summary.error.find("not a grainlab checkpoint"), std::string::npos) << summary.error;
   EXPECT_NE(summary.error.find("header incomplete"), std::string::npos) << summary.error;
   EXPECT_EQ(fileBytes(dir_ / "series.csv"), seriesBefore) << "a refused resume leaves the outputs as they were";

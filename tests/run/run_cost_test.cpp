@@ -62,7 +62,7 @@ TEST(RunCost, AnAbsurdStiffnessIsRefusedByName) {
   scene["material"]["tangential_stiffness"] = 1e30;
   Outcome o = run(scene, kMonth);
   EXPECT_TRUE(o.summary.refused);
-  EXPECT_EQ(o.summary.status, "failed");
+  EXPECT_EQ(o.summary.status, RunStatus::Failed);
   EXPECT_FALSE(o.probe.started) << "a refused run writes nothing";
   EXPECT_EQ(o.summary.steps, 0);
   EXPECT_EQ(o.summary.error.rfind("material.normal_stiffness: ", 0), 0u) << o.summary.error;
@@ -95,7 +95,7 @@ TEST(RunCost, WithoutALimitNothingIsRefused) {
   Outcome o = run(scene, std::numeric_limits<double>::infinity());
   EXPECT_FALSE(o.summary.refused);
   EXPECT_TRUE(o.probe.started);
-  EXPECT_EQ(o.summary.status, "cancelled") << "it started, and the probe stopped it";
+  EXPECT_EQ(o.summary.status, RunStatus::Cancelled) << "it started, and the probe stopped it";
 }
 
 TEST(RunCost, DurationsReadForPeople) {

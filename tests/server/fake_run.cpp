@@ -27,7 +27,7 @@ RunFunction fakeRun(FakeRun spec) {
       observer.onProgress(double(s + 1) / spec.samples, "free", world);
       const bool stop = observer.stopRequested();  // a clean stop, as the engine's: interrupted
       if (stop || observer.cancelRequested()) {
-        summary.status = stop ? "interrupted" : "cancelled";
+        summary.status = stop ? RunStatus::Interrupted : RunStatus::Cancelled;
         observer.onFinish(summary, world);
         return summary;
       }
@@ -44,7 +44,7 @@ RunFunction fakeRun(FakeRun spec) {
     }
     summary.steps = world.stepCount();
     if (spec.fail) {
-      summary.status = "failed";
+      summary.status = RunStatus::Failed;
       summary.error = "particle 1 has a non-finite position (timestep too large?)";
     }
     observer.onFinish(summary, world);

@@ -59,7 +59,7 @@ TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
   repo.appendFrame(a, 0, 20, 1.0, std::string("\x01\x00\x02", 3));
   repo.setShapes(a, 3, R"({"type":"shapes"})");
   RunEnd end;
-  end.status = "completed";
+  end.status = RunStatus::Completed;
   end.finishedAt = 1700000002.0;
   end.wallSeconds = 0.75;
   end.cpuSeconds = 0.5;
@@ -72,7 +72,7 @@ TEST(Repository, StoresARunWithItsSeriesFramesAndEnd) {
 
   auto run = repo.findRun(a);
   ASSERT_TRUE(run);
-  EXPECT_EQ(run->status, "completed");
+  EXPECT_EQ(run->status, RunStatus::Completed);
   EXPECT_DOUBLE_EQ(run->progress, 1.0);
   EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
   EXPECT_DOUBLE_EQ(*run->cpuSeconds, 0.5);
@@ -109,14 +109,14 @@ TEST(Repository, ReopeningMarksRunningRunsInterruptedKeepsQueuedOnesAndTheirSeri
     repo.markStarted(running, 1.0);
     repo.appendSample(running, {0, 1, 0.1, "free", {1.0}});
     RunEnd end;
-    end.status = "completed";
+    end.status = RunStatus::Completed;
     repo.finishRun(done, end, nullptr);
   }
   Repository repo(path);
-  EXPECT_EQ(repo.findRun(running)->status, "interrupted");
+  EXPECT_EQ(repo.findRun(running)->status, RunStatus::Interrupted);
   EXPECT_FALSE(repo.findRun(running)->error.empty());
-  EXPECT_EQ(repo.findRun(queuedId)->status, "queued") << "the server queues it again";
-  EXPECT_EQ(repo.findRun(done)->status, "completed");
+  EXPECT_EQ(repo.findRun(queuedId)->status, RunStatus::Queued) << "the server queues it again";
+  EXPECT_EQ(repo.findRun(done)->status, RunStatus::Completed);
   EXPECT_EQ(repo.samples(running).size(), 1u);
   // Ids are never reused, even after the newest run is deleted.
   EXPECT_TRUE(repo.deleteRun(done).get());
@@ -144,7 +144,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     Repository repo(path);
     id = repo.insertRun(queued("old")).get();
     RunEnd end;
-    end.status = "completed";
+    end.status = RunStatus::Completed;
     end.finishedAt = 1700000002.0;
     end.wallSeconds = 0.75;
     repo.finishRun(id, end, {});

@@ -54,7 +54,7 @@ TEST_F(RunBatchTest, EachRunWritesWhatGrainlabRunWrites) {
   const std::vector<BatchRunResult> results = run(options);
   ASSERT_EQ(results.size(), runs_.size());
   for (size_t k = 0; k < runs_.size(); ++k) {
-    EXPECT_EQ(results[k].status, "completed") << results[k].error;
+    EXPECT_EQ(results[k].status, RunStatus::Completed) << results[k].error;
     EXPECT_FALSE(results[k].reused);
     // The same scene run directly, as `grainlab run scene.json` does.
     const fs::path direct = dir_ / ("direct" + std::to_string(k));
@@ -74,7 +74,7 @@ TEST_F(RunBatchTest, EachRunWritesWhatGrainlabRunWrites) {
 TEST_F(RunBatchTest, ParaViewFramesWhenTheSceneAsksAsGrainlabRunWrites) {
   runs_.resize(1);
   runs_[0].scene["output"]["vtk"] = true;
-  ASSERT_EQ(run()[0].status, "completed");
+  ASSERT_EQ(run()[0].status, RunStatus::Completed);
   EXPECT_TRUE(fs::exists(runs_[0].dir / "vtk" / "run.pvd"));
   EXPECT_TRUE(fs::exists(runs_[0].dir / "vtk" / "particles_0000.vtp"));
 }
@@ -85,7 +85,7 @@ TEST_F(RunBatchTest, RunningAgainRerunsExactlyWhatIsMissing) {
   fs::remove_all(runs_[2].dir);
   const std::vector<BatchRunResult> again = run();
   for (size_t k = 0; k < runs_.size(); ++k) {
-    EXPECT_EQ(again[k].status, "completed");
+    EXPECT_EQ(again[k].status, RunStatus::Completed);
     EXPECT_EQ(again[k].reused, k != 2) << k;
   }
   EXPECT_EQ(fs::last_write_time(runs_[0].dir / "series.csv"), kept);  // not rewritten
@@ -108,16 +108,16 @@ TEST_F(RunBatchTest, AFailedRunIsRecordedAndRerunLater) {
     return std::make_unique<OutputWriter>(work.string(), nullptr);
   };
   const std::vector<BatchRunResult> results = run(options);
-  EXPECT_EQ(results[1].status, "failed");
+  EXPECT_EQ(results[1].status, RunStatus::Failed);
   EXPECT_NE(results[1].error.find("disk full"), std::string::npos);
-  for (size_t k : {0u, 2u, 3u}) EXPECT_EQ(results[k].status, "completed") << k;
+  for (size_t k : {0u, 2u, 3u}) EXPECT_EQ(results[k].status, RunStatus::Completed) << k;
   const std::optional<BatchRunResult> recorded = finishedRun(runs_[1].dir);
   ASSERT_TRUE(recorded);
-  EXPECT_EQ(recorded->status, "failed");
+  EXPECT_EQ(recorded->status, RunStatus::Failed);
   EXPECT_EQ(recorded->error, results[1].error);
 
   const std::vector<BatchRunResult> again = run();  // the fault is gone
-  EXPECT_EQ(again[1].status, "completed");
+  EXPECT_EQ(again[1].status, RunStatus::Completed);
   EXPECT_FALSE(again[1].reused);
   EXPECT_TRUE(again[0].reused);
 }
@@ -147,12 +147,12 @@ TEST_F(RunBatchTest, ARunKilledHalfWayResumesFromItsCheckpointToTheSameOutputs) 
   {
     StopAt attempt(partial, scene, 0.4);
     const CheckpointPolicy policy{(partial / "checkpoint.bin").string(), 1e9, runs_[0].scene.dump()};
-    ASSERT_EQ(runScene(scene, attempt, {}, policy).status, "interrupted");
+    ASSERT_EQ(runScene(scene, attempt, {}, policy).status, RunStatus::Interrupted);
   }
   const std::vector<BatchRunResult> results = run();
   EXPECT_TRUE(results[0].resumed);
   EXPECT_FALSE(results[1].resumed) << "a run with no partial directory starts from the beginning";
-  ASSERT_EQ(results[0].status, "completed") << results[0].error;
+  ASSERT_EQ(results[0].status, RunStatus::Completed) << results[0].error;
   const fs::path direct = dir_ / "direct";
   OutputWriter writer(direct.string(), nullptr);
   runScene(scene, writer);
@@ -174,7 +174,7 @@ TEST_F(RunBatchTest, APartialOrUnreadableDirectoryIsNotAFinishedRun) {
   EXPECT_FALSE(again[3].reused);
   EXPECT_TRUE(again[1].reused);
   EXPECT_FALSE(fs::exists(dir_ / ".run0.partial"));
-  EXPECT_EQ(finishedRun(runs_[3].dir)->status, "completed");
+  EXPECT_EQ(finishedRun(runs_[3].dir)->status, RunStatus::Completed);
 }
 
 }  // namespace

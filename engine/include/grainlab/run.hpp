@@ -8,6 +8,7 @@
 
 #include "grainlab/checkpoint.hpp"
 #include "grainlab/run_cost.hpp"
+#include "grainlab/run_status.hpp"
 #include "grainlab/scene.hpp"
 
 namespace grainlab {
@@ -29,9 +30,9 @@ struct Sample {
 };
 
 struct RunSummary {
-  /// completed | failed | cancelled | interrupted (stopped on request; resumable from its
-  /// checkpoint if it had one)
-  std::string status = "completed";
+  /// Completed, Failed, Cancelled or Interrupted (stopped on request; resumable from its
+  /// checkpoint if it had one).
+  RunStatus status = RunStatus::Completed;
   std::string error;                  ///< why it failed
   bool refused = false;               ///< failed before its first step: its cost is over the limit
   double wallSeconds = 0;

@@ -25,7 +25,7 @@ std::vector<Ensemble> groupEnsembles(std::span<const AssemblyResult> runs) {
       it = out.end() - 1;
     }
     ++it->attempted;
-    if (a.summary.status == "completed" && a.shearing.size() > 0) it->runs.push_back(&a);
+    if (a.summary.status == RunStatus::Completed && a.shearing.size() > 0) it->runs.push_back(&a);
   }
   for (Ensemble& e : out) {
     std::stable_sort(e.runs.begin(), e.runs.end(),

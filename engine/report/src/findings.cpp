@@ -15,7 +15,7 @@ namespace {
 
 using namespace criteria;
 
-bool usable(const AssemblyResult& a) { return a.summary.status == "completed" && a.shearing.size() >= 2; }
+bool usable(const AssemblyResult& a) { return a.summary.status == RunStatus::Completed && a.shearing.size() >= 2; }
 
 std::vector<const AssemblyResult*> select(std::span<const AssemblyResult> runs, bool (*wanted)(const AssemblyResult&)) {
   std::vector<const AssemblyResult*> out;
@@ -425,7 +425,7 @@ Finding findVoidRatios(std::span<const AssemblyResult> runs) {
   bool any = false;
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
-    if (a.summary.status != "completed" || !(e >= 0)) continue;
+    if (a.summary.status != RunStatus::Completed || !(e >= 0)) continue;
     any = true;
     f.checks.push_back(measuredCheck(a.label(), "void ratio after consolidation", e, kVoidRatioLow, below(kVoidRatioHigh),
                                      "e = " + fixed(e, 3) + " (paper " + fixed(paperVoidRatio(a), 3) + ")"));

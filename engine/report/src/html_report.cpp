@@ -61,7 +61,7 @@ CsvTable runsTable(std::span<const AssemblyResult> runs) {
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
     const size_t n = a.shearing.size();
-    t.addRow({a.preset, a.seed, a.summary.status, a.summary.error, a.summary.particles, static_cast<double>(a.summary.steps),
+    t.addRow({a.preset, a.seed, std::string(toString(a.summary.status)), a.summary.error, a.summary.particles, static_cast<double>(a.summary.steps),
               a.summary.wallSeconds, e >= 0 ? e : std::nan(""), paperVoidRatio(a), finiteMax(a.shearing.column("phi_mob_deg")),
               static_cast<int>(n), n ? a.shearing.at("contacts", 0) : std::nan(""),
               n ? a.shearing.at("axial_strain", n - 1) : std::nan(""), runDirectory(a)});
@@ -120,7 +120,7 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
     o += "<tr>" + td(a.preset) + td(std::to_string(a.seed), true) +
-         td(a.summary.status + (a.summary.error.empty() ? "" : ": " + a.summary.error)) +
+         td(std::string(toString(a.summary.status)) + (a.summary.error.empty() ? "" : ": " + a.summary.error)) +
          td(std::to_string(a.summary.particles), true) + td(fixed(a.summary.wallSeconds, 1), true) +
          td(e >= 0 ? fixed(e, 3) : "-", true) + td(fixed(paperVoidRatio(a), 3), true) +
          td(fixed(finiteMax(a.shearing.column("phi_mob_deg")), 1), true) +

@@ -92,13 +92,13 @@ PaperOutcome runPaper(const PaperOptions& options, std::ostream* progress) {
         failed.preset = preset;
       }
       failed.seed = std::max(seed, 1);
-      failed.summary.status = "failed";
+      failed.summary.status = RunStatus::Failed;
       failed.summary.error = e.what();
       outcome.runs.push_back(std::move(failed));
     }
   }
   outcome.allCompleted = true;
-  for (const AssemblyResult& a : outcome.runs) outcome.allCompleted = outcome.allCompleted && a.summary.status == "completed";
+  for (const AssemblyResult& a : outcome.runs) outcome.allCompleted = outcome.allCompleted && a.summary.status == RunStatus::Completed;
 
   ReportContext context;
   context.command = options.command;

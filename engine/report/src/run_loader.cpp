@@ -63,7 +63,7 @@ RunSummary readRunSummary(const std::string& runDir) {
     throw std::runtime_error(file.string() + ": " + e.what());
   }
   RunSummary summary;
-  summary.status = s.value("status", std::string("failed"));
+  summary.status = parseRunStatus(s.value("status", std::string())).value_or(RunStatus::Failed);
   summary.error = s.value("error", std::string());
   summary.wallSeconds = s.value("wall_seconds", 0.0);
   summary.steps = s.value("steps", std::int64_t{0});

@@ -43,12 +43,12 @@ void BatchProgress::advanced(const std::string& id, double fraction) {
   if (std::chrono::duration<double>(now - lastLine_).count() >= kAdvanceLineSeconds) print("");
 }
 
-void BatchProgress::finished(const std::string& id, const std::string& status, double wallSeconds) {
+void BatchProgress::finished(const std::string& id, RunStatus status, double wallSeconds) {
   std::lock_guard lock(mutex_);
   std::erase_if(running_, [&](const auto& r) { return r.first == id; });
   ++done_;
-  if (status != "completed") ++failed_;
-  print(id + " " + status + " in " + formatDuration(wallSeconds));
+  if (status != RunStatus::Completed) ++failed_;
+  print(id + " " + std::string(toString(status)) + " in " + formatDuration(wallSeconds));
 }
 
 void BatchProgress::print(const std::string& event) {

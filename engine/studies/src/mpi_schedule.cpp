@@ -23,7 +23,7 @@ constexpr int kTagAssign = 2;  // rank 0 -> worker: the index of its next run, o
 constexpr auto kPollInterval = std::chrono::milliseconds(2);
 
 std::string encodeReport(long index, const BatchRunResult& result) {
-  return nlohmann::json{{"index", index}, {"status", result.status}, {"error", result.error},
+  return nlohmann::json{{"index", index}, {"status", toString(result.status)}, {"error", result.error},
                         {"wall_seconds", result.wallSeconds}}
       .dump();
 }
@@ -78,7 +78,7 @@ void runDistributed(const std::vector<BatchRun>& runs, const std::vector<size_t>
     const long done = report.at("index").get<long>();
     if (done >= 0) {
       BatchRunResult& r = results[static_cast<size_t>(done)];
-      r.status = report.at("status").get<std::string>();
+      r.status = parseRunStatus(report.at("status").get<std::string>()).value_or(RunStatus::Failed);
       r.error = report.at("error").get<std::string>();
       r.wallSeconds = report.at("wall_seconds").get<double>();
       progress.finished(runs[done].id + " (rank " + std::to_string(status.MPI_SOURCE) + ")", r.status, r.wallSeconds);

@@ -49,7 +49,7 @@ void writeText(const fs::path& path, const std::string& text) {
 // For a run that ended before its observer wrote a summary (its world could not be built, or
 // its directory could not be written): the same file, saying why.
 void writeFailureSummary(const fs::path& dir, const BatchRunResult& result) {
-  const nlohmann::json summary{{"status", result.status}, {"error", result.error}, {"wall_seconds", result.wallSeconds}};
+  const nlohmann::json summary{{"status", toString(result.status)}, {"error", result.error}, {"wall_seconds", result.wallSeconds}};
   writeText(dir / "summary.json", summary.dump(2) + "\n");
 }
 
@@ -126,7 +126,7 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     result.wallSeconds = summary.wallSeconds;
     if (!fs::exists(work / "summary.json")) writeFailureSummary(work, result);
   } catch (const std::exception& e) {
-    result.status = "failed";
+    result.status = RunStatus::Failed;
     result.error = e.what();
     try {
       writeFailureSummary(work, result);
@@ -140,7 +140,7 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     fs::remove_all(run.dir);  // an earlier failed attempt
     fs::rename(work, run.dir);
   } catch (const std::exception& e) {
-    result.status = "failed";
+    result.status = RunStatus::Failed;
     result.error = "cannot move the run into " + run.dir.string() + ": " + e.what();
   }
   progress.finished(run.id, result.status, result.wallSeconds);
@@ -153,7 +153,9 @@ std::optional<BatchRunResult> finishedRun(const fs::path& dir) {
   try {
     const nlohmann::json summary = nlohmann::json::parse(in);
     BatchRunResult result;
-    result.status = summary.at("status").get<std::string>();
+    const std::optional<RunStatus> status = parseRunStatus(summary.at("status").get<std::string>());
+    if (!status) return std::nullopt;
+    result.status = *status;
     result.error = summary.value("error", std::string());
     result.wallSeconds = summary.value("wall_seconds", 0.0);
     return result;
@@ -175,7 +177,7 @@ std::vector<BatchRunResult> runBatch(const std::vector<BatchRun>& runs, const Ba
   std::vector<size_t> pending;
   for (size_t k = 0; k < runs.size(); ++k) {
     const std::optional<BatchRunResult> earlier = finishedRun(runs[k].dir);
-    if (earlier && earlier->status == "completed" && sameScene(runs[k].dir, runs[k].scene)) {
+    if (earlier && earlier->status == RunStatus::Completed && sameScene(runs[k].dir, runs[k].scene)) {
       results[k] = *earlier;
       results[k].reused = true;
     } else {

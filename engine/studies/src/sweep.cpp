@@ -79,7 +79,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& options, const 
   writeFileAtomically((options.outDir / kTableFile).string(), sweepTable(runs, results, runsDir));
   SweepOutcome outcome;
   outcome.runs = runs.size();
-  for (const BatchRunResult& r : results) (r.status == "completed" ? outcome.completed : outcome.failed) += 1;
+  for (const BatchRunResult& r : results) (r.status == RunStatus::Completed ? outcome.completed : outcome.failed) += 1;
   if (options.progress) {
     *options.progress << "[sweep] " << outcome.completed << " of " << outcome.runs << " runs completed"
                       << (outcome.failed ? ", " + std::to_string(outcome.failed) + " failed or cancelled" : "")

@@ -89,7 +89,7 @@ std::string sweepTable(const std::vector<SweepRun>& runs, const std::vector<Batc
     }
     char wall[32];
     std::snprintf(wall, sizeof wall, "%.3f", result.wallSeconds);
-    cell(result.status);
+    cell(std::string(toString(result.status)));
     cell(result.error);
     cell(wall);
     const nlohmann::json summary = readSummary(runsDir / run.id / "summary.json");

@@ -6,6 +6,8 @@
 #include <mutex>
 #include <ostream>
 #include <string>
+
+#include "grainlab/run_status.hpp"
 #include <vector>
 
 namespace grainlab::studies {
@@ -17,7 +19,7 @@ class BatchProgress {
   void started(const std::string& id);
   /// A running run's own progress in [0, 1]; lines for these are at most every few seconds.
   void advanced(const std::string& id, double fraction);
-  void finished(const std::string& id, const std::string& status, double wallSeconds);
+  void finished(const std::string& id, RunStatus status, double wallSeconds);
 
  private:
   void print(const std::string& event);  // with mutex_ held

@@ -31,7 +31,7 @@ struct BatchRun {
 
 /// How a run ended, as its summary.json says.
 struct BatchRunResult {
-  std::string status;          ///< completed | failed | cancelled
+  RunStatus status = RunStatus::Failed;
   std::string error;
   double wallSeconds = 0;
   bool reused = false;         ///< completed by an earlier invocation, not run again
