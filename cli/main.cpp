@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "columns_command.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/presets.hpp"
@@ -34,6 +35,7 @@ int usage(std::ostream& out, int code) {
          "  resume DIR                   continue an interrupted run from DIR's checkpoint; its\n"
          "                               outputs end as the uninterrupted run's would\n"
          "  presets                      list the presets\n"
+         "  columns [--json|--markdown]  series.csv's columns: name, unit, meaning\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
          "                               speed on settled piles of discs and polygons\n"
@@ -113,6 +115,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "run") return grainlab::runCommand(args);
     if (command == "resume") return grainlab::resumeCommand(args);
+    if (command == "columns") return grainlab::columnsCommand(args);
     if (command == "presets") {
       for (const std::string& name : grainlab::presetNames()) std::cout << name << "\n";
       return 0;

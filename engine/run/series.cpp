@@ -8,20 +8,65 @@
 
 namespace grainlab {
 
+const std::vector<SeriesColumn>& seriesColumnTable() {
+  // contracts.md's columns first, in its order; grainlab's extensions after them. Angles
+  // follow docs/micromechanics.md; stresses and strains are compression positive.
+  static const std::vector<SeriesColumn> table{
+      {"step", "", "timestep count since the run began"},
+      {"time", "s", "simulated time since the run began"},
+      {"stage", "", "the stage's name"},
+      {"axial_strain", "",
+       "ε22 = 1 − stretch along axis 2 since the stage began (consolidation and loading stages)"},
+      {"lateral_strain", "", "ε11 = 1 − stretch along axis 1, from the same start"},
+      {"volumetric_strain", "", "1 − A/A0 of the area inside the ring, from the same start"},
+      {"sigma11", "Pa", "σ11 of the contact stress over the area inside the ring"},
+      {"sigma22", "Pa", "σ22 of the contact stress"},
+      {"sigma12", "Pa", "σ12 of the contact stress"},
+      {"sigma21", "Pa", "σ21 of the contact stress"},
+      {"p", "Pa", "mean stress (σ11 + σ22)/2"},
+      {"q", "Pa", "radius of Mohr's circle √(((σ11 − σ22)/2)² + ((σ12 + σ21)/2)²) = (σ1 − σ3)/2"},
+      {"phi_mob_deg", "°", "mobilised friction angle asin(q/p)"},
+      {"void_ratio", "", "(area inside the ring − solid area)/solid area"},
+      {"coordination", "", "contact ends on specimen particles per specimen particle"},
+      {"contacts", "", "contacts touching a specimen particle"},
+      {"a_c", "", "anisotropy of the contact normals"},
+      {"theta_c_deg", "°", "direction of the contact normals' anisotropy"},
+      {"a_n", "", "anisotropy of the normal contact forces"},
+      {"theta_n_deg", "°", "direction of the normal forces' anisotropy"},
+      {"a_t", "", "anisotropy of the tangential contact forces"},
+      {"theta_t_deg", "°", "direction of the tangential forces' anisotropy"},
+      {"a_w", "", "rotation term from moment equilibrium"},
+      {"a_ln", "", "anisotropy of the normal part of the contact vectors"},
+      {"theta_ln_deg", "°", "its direction"},
+      {"a_lt", "", "anisotropy of the tangential part of the contact vectors"},
+      {"theta_lt_deg", "°", "its direction"},
+      {"theta_sigma_macro_deg", "°", "major principal stress direction from the stress tensor"},
+      {"theta_sigma_micro_deg", "°", "the same from the fabric coefficients, Eq. (7)"},
+      {"theta_sigma_eq10_deg", "°", "the same by Eq. (10): the mean of θ_c, θ_n, θ_t"},
+      {"theta_sigma_eq11_deg", "°", "the same by Eq. (11): Eq. (7) without the contact-vector terms"},
+      {"omega_macro_deg", "°", "non-coaxiality ω = θσ(macro) − 90°, wrapped to [−90°, 90°)"},
+      {"omega_micro_deg", "°", "ω from θσ(micro)"},
+      {"kinetic_energy", "J/m", "Σ ½ m v² + ½ I ω² over the dynamic particles"},
+      {"omega_eq10_deg", "°", "ω from θσ by Eq. (10)"},
+      {"omega_eq11_deg", "°", "ω from θσ by Eq. (11)"},
+      {"f0", "N", "mean normal contact force (the fabric fit's isotropic part)"},
+      {"l0", "m", "mean normal contact-vector length (the fabric fit's isotropic part)"},
+      {"inertial_number", "", "I = |ε̇| d √(ρ/p); quasi-static below about 1e-3"},
+      {"elastic_energy", "J/m", "energy stored in the contact springs"},
+      {"area", "m²", "area inside the ring's inner envelope"},
+      {"theta_strain_rate_deg", "°",
+       "direction of the major (most compressive) principal strain rate, fitted to the ring's motion"},
+      {"omega_strain_rate_deg", "°", "θσ(macro) − θ_strain_rate, wrapped to [−90°, 90°)"},
+  };
+  return table;
+}
+
 const std::vector<std::string>& seriesColumns() {
-  // contracts.md's columns first, in its order; grainlab's extensions after them.
-  static const std::vector<std::string> columns{
-      "step", "time", "stage", "axial_strain", "lateral_strain", "volumetric_strain",
-      "sigma11", "sigma22", "sigma12", "sigma21", "p", "q", "phi_mob_deg", "void_ratio",
-      "coordination", "contacts", "a_c", "theta_c_deg", "a_n", "theta_n_deg", "a_t",
-      "theta_t_deg", "a_w", "a_ln", "theta_ln_deg", "a_lt", "theta_lt_deg",
-      "theta_sigma_macro_deg", "theta_sigma_micro_deg", "theta_sigma_eq10_deg",
-      "theta_sigma_eq11_deg", "omega_macro_deg", "omega_micro_deg", "kinetic_energy",
-      // extensions
-      "omega_eq10_deg", "omega_eq11_deg", "f0", "l0",
-      "inertial_number", "elastic_energy", "area",
-      // loading paths (docs/loading-paths.md)
-      "theta_strain_rate_deg", "omega_strain_rate_deg"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const SeriesColumn& c : seriesColumnTable()) names.push_back(c.name);
+    return names;
+  }();
   return columns;
 }
 
