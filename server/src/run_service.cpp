@@ -207,7 +207,12 @@ std::int64_t RunService::create(const std::string& body) {
   record.particles = particles;
   record.estimatedSeconds = cost.certainSeconds();
   record.createdAt = unixNow();
-  const std::int64_t id = repo_.insertRun(record).get();
+  std::int64_t id = 0;
+  try {
+    id = repo_.insertRun(record).get();
+  } catch (const std::exception&) {
+    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
+  }
 
   if (const auto submitted = enqueue(id, particles, std::move(scene));
       submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
@@ -242,12 +247,18 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   } else {
     try {
       WallTimeLimit limit(options_.maxRunSeconds);
-      ObserverTee watched{&observer, &limit};
+      DatabaseWatch database(repo_);
+      ObserverTee watched{&observer, &limit, &database};
       summary = run_(scene, watched);
       if (summary.status == "cancelled" && limit.exceeded() && !run->stopRequested()) {
         summary.status = "failed";
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
                         ", the server's wall-time limit for a run (grainlab serve --max-run-seconds)";
+      }
+      if (summary.status == "cancelled" && database.failed() && !run->stopRequested()) {
+        summary.status = "failed";
+        summary.error = "stopped: the database could not be written (" + repo_.lastWriteError() +
+                        "); what the run stored before is kept";
       }
     } catch (const std::exception& e) {
       summary.status = "failed";
@@ -295,9 +306,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 }
 
 void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& end) {
-  // Runs once the end is durable: whoever sees "completed" finds the whole series stored.
+  // Runs once the end is durable (whoever sees "completed" finds the whole series stored),
+  // or once the database has refused it (a full disk).
   run->update([&](LiveRun::State& s) {
     s.status = end.status;
+    s.error = end.error;
     if (end.status == status::kCompleted) s.progress = 1;
   });
   const auto s = run->state();
@@ -305,10 +318,14 @@ void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& en
                                                      end.steps, end.error),
                                        MessageKind::Status));
   hub_.close(run->id());
+  // An end the database could not take (a full disk) is kept live, so the API still tells
+  // it, until a restart finds the run unfinished and marks it interrupted.
+  const auto stored = repo_.findRun(run->id());
+  const bool ended = stored && status::isTerminal(stored->status);
   bool deleted;
   {
     std::lock_guard lock(liveMutex_);
-    live_.erase(run->id());
+    if (ended || run->deleted()) live_.erase(run->id());
     deleted = run->deleted();
   }
   // DELETE arrived while the end was being written.
@@ -340,6 +357,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       merged.steps = s.steps;
       merged.particles = s.particles;
       if (s.startedAt) merged.startedAt = s.startedAt;
+      if (!s.error.empty()) merged.error = s.error;
     }
     cancelRequested = run->stopRequested();
   }
