@@ -250,6 +250,13 @@ void RigidBodySolver::persist(StateArchive& a) {
   a.bitwise(contacts_);
   if (a.loading()) {
     a.require(bodies.size() == bodies_.size(), "box2d's body count differs from the scene's");
+    // Indices the solver reads with: a manifold's points (Box2D holds two at most) and the
+    // contacts' particles and walls.
+    for (const ContactState& c : contacts)
+      a.require(c.points >= 0 && c.points <= b2_maxManifoldPoints, "a box2d contact has " + std::to_string(c.points) + " points");
+    const int n = world_.size(), walls = static_cast<int>(world_.walls_.size());
+    for (const ContactRecord& r : contacts_)
+      a.require(r.i >= 0 && r.i < n && r.j >= -walls && r.j < n, "a box2d contact's particle or wall is out of range");
     build(bodies, contacts);
   }
 }
