@@ -4,8 +4,8 @@
 // itself (http_session.cpp gives a request 30 s to arrive, an idle keep-alive connection
 // included), which gives their file descriptors back.
 //
-// GRAINLAB_HALFOPEN_NOFILE=SOFT:HARD starts the server under that open-file limit (prlimit).
-// With HARD below COUNT the server runs out of descriptors: new connections then wait in the
+// GRAINLAB_HALFOPEN_NOFILE=SOFT:HARD starts the server under that open-file limit (prlimit);
+// it must raise SOFT to HARD (serve.cpp). With HARD below COUNT the server runs out of descriptors: new connections then wait in the
 // kernel's accept queue behind the idle ones until those time out, and the server must serve
 // them then, without spinning on accept meanwhile. GRAINLAB_HALFOPEN_QUICK=1 (ctest) stops
 // there, without waiting for every wave of idle connections to time out.
@@ -34,6 +34,11 @@ try {
   const before = openFiles(server.pid);
   figure(S, "server's open-file limit (soft, after its start)", before.limit);
   figure(S, 'server file descriptors before', before.count);
+  const [soft, hard] = (NOFILE ?? '').split(':').map(Number);
+  if (soft < hard) {
+    // serve.cpp raises its soft limit to the hard one: the usual 1,024 is too few.
+    check(`the server raised its open-file limit from ${soft} to the hard limit ${hard} (${before.limit})`, before.limit === hard);
+  }
   const exhausted = before.limit < COUNT + before.count + 5;
   const scene = await longScene(server.base, 0.05);
   const { body } = await postJson(`${server.base}/api/runs`, scene);
