@@ -34,13 +34,20 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
   // so every candidate of a particle lies in its own or the eight surrounding cells.
   double rmax = 0;
   Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  bool finite = true;
   for (int k = 0; k < n; ++k) {
     rmax = std::max(rmax, boundingRadii[k]);
     lo = lo.cwiseMin(positions[k]);
     hi = hi.cwiseMax(positions[k]);
+    finite = finite && positions[k].allFinite();  // (min and max pass a NaN over: lo and hi cannot tell)
   }
-  if (n && !(std::isfinite(lo.x()) && std::isfinite(lo.y()) && std::isfinite(hi.x()) && std::isfinite(hi.y()))) {
+  if (n && !(finite && std::isfinite(lo.x()) && std::isfinite(lo.y()) && std::isfinite(hi.x()) && std::isfinite(hi.y()))) {
     throw std::domain_error("non-finite particle position");
+  }
+  // Finite positions 1e308 apart span an infinite box, which no cell size divides. Both
+  // reached a float-to-int conversion of NaN below (fuzz_checkpoint, with a loaded state).
+  if (n && !(std::isfinite(hi.x() - lo.x()) && std::isfinite(hi.y() - lo.y()))) {
+    throw std::domain_error("particle positions too far apart to be a packing");
   }
   double cell = std::max(2 * rmax + skin, 1e-12);
   // A sparse scene (a particle flung far away) must not allocate a huge grid: widen the

@@ -15,6 +15,7 @@
 set -uo pipefail
 CLI=${GRAINLAB_CLI:-build/grainlab}
 CLI=$(realpath "$CLI")
+mkdir -p "${GRAINLAB_TEST_TMP:-/tmp}"
 ROOT=$(mktemp -d "${GRAINLAB_TEST_TMP:-/tmp}/diskfull.XXXXXX")
 PASSED=0
 FAILED=0

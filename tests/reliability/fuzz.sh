@@ -8,6 +8,7 @@ BIN=$1
 SECONDS_EACH=$2
 ARTIFACTS=$3
 SOURCE=$(cd "$(dirname "$0")/../server/fuzz" && pwd)
+mkdir -p "${GRAINLAB_TEST_TMP:-/tmp}"
 WORK=$(mktemp -d "${GRAINLAB_TEST_TMP:-/tmp}/fuzz.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
 mkdir -p "$ARTIFACTS"
@@ -44,7 +45,7 @@ for target in scene http sweep checkpoint; do
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$ARTIFACTS/$target-" \
     "$corpus" "$SOURCE/corpus/$target" >"$WORK/$target.log" 2>&1
   code=$?
-  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$WORK/$target.log" | grep -o '[0-9]*$')
+  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$WORK/$target.log" | tail -1 | grep -o '[0-9]*$')
   crashes=$(($(find "$ARTIFACTS" -name "$target-*" | wc -l) - before))
   ((code != 0 && crashes == 0)) && crashes=1
   echo "# fuzz_$target: exit $code, ${runs:-?} inputs in $SECONDS_EACH s, $crashes crashes"
