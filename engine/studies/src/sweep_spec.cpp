@@ -177,8 +177,15 @@ std::vector<SweepRun> expandSweep(const SweepSpec& spec) {
     }
     for (size_t a = 0; a < spec.axes.size(); ++a) {
       const nlohmann::json& value = spec.axes[a].values[pick[a]];
-      setAtPath(run.scene, spec.axes[a].path, value);  // its form was checked by parseSweepSpec
       run.parameters.emplace_back(spec.axes[a].path, value);
+      try {
+        setAtPath(run.scene, spec.axes[a].path, value);
+      } catch (const std::invalid_argument& e) {
+        // parseSweepSpec tried each path alone with its first value; here another path's
+        // value may have changed what this one goes through ("seed" = 2, then "seed.x").
+        throw SceneError("vary." + spec.axes[a].path,
+                         "run " + std::to_string(k + 1) + " (" + describe(run.parameters) + "): " + e.what());
+      }
     }
     try {
       parseScene(run.scene);
