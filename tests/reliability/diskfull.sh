@@ -84,7 +84,7 @@ code=$?
 error=$(grep '^error:' "$ROOT/a.err" | tail -1)
 echo "# $error"
 figure "$S" '(a) grainlab run --vtk on a 2 MiB tmpfs: exit status' "$code" '' 'nonzero' "$([[ $code != 0 ]] && echo true || echo false)"
-figure "$S" '(a) its last words' "${error:0:200}"
+figure "$S" '(a) its last words' "${error//$ROOT/TMP}"
 check "(a) the run exits nonzero ($code)" test "$code" -ne 0
 check "(a) its error names a file on the full disk and 'No space left on device'" \
   grep -q "^error: .*cannot write $A/run/[^ ]*: No space left on device" "$ROOT/a.err"
@@ -124,7 +124,8 @@ check "(b) it says its checkpoint failed: No space left on device" \
   grep -q "checkpoint failed: cannot write checkpoint $B/run/checkpoint.bin.tmp: No space left on device" "$ROOT/b.err"
 check "(b) and that its last checkpoint is kept for grainlab resume" grep -q 'grainlab resume' "$ROOT/b.err"
 check "(b) no temporary checkpoint left behind" test ! -e "$B/run/checkpoint.bin.tmp"
-figure "$S" '(b) run whose checkpoint cannot be written: exit status, then' "$code: $(grep -o 'checkpoint failed: [^;]*' "$ROOT/b.err" | head -1)"
+said=$(grep -o 'checkpoint failed: [^;]*' "$ROOT/b.err" | head -1)
+figure "$S" '(b) run whose checkpoint cannot be written: exit status, then' "$code: ${said//$ROOT/TMP}"
 cp -a "$B/run" "$ROOT/b-copy"
 "$CLI" resume "$ROOT/b-copy" >/dev/null 2>"$ROOT/b-resume.err"
 rcode=$?

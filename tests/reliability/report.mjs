@@ -1,11 +1,14 @@
 // scripts/reliability's table: the `figure {json}` lines of a run's log, grouped by section,
 // as text on stdout and, with --markdown FILE, as markdown tables (for docs/reliability.md).
-// Usage: node report.mjs LOG [--markdown FILE] [--title TEXT]
+// Usage: node report.mjs LOG... [--markdown FILE] [--title TEXT] (several logs: one table)
 import { readFileSync, writeFileSync } from 'node:fs';
 
-const [log, ...rest] = process.argv.slice(2);
+const args = process.argv.slice(2);
+const firstOption = args.findIndex((a) => a.startsWith('--'));
+const logs = firstOption < 0 ? args : args.slice(0, firstOption);
+const rest = firstOption < 0 ? [] : args.slice(firstOption);
 const option = (name) => { const k = rest.indexOf(name); return k >= 0 ? rest[k + 1] : undefined; };
-const lines = readFileSync(log, 'utf8').split('\n');
+const lines = logs.flatMap((log) => readFileSync(log, 'utf8').split('\n'));
 const figures = lines.filter((l) => l.startsWith('figure ')).map((l) => JSON.parse(l.slice(7)));
 const failedChecks = lines.filter((l) => l.startsWith('FAIL - '));
 
