@@ -5,10 +5,11 @@
 // included), which gives their file descriptors back.
 //
 // GRAINLAB_HALFOPEN_NOFILE=SOFT:HARD starts the server under that open-file limit (prlimit);
-// it must raise SOFT to HARD (serve.cpp). With HARD below COUNT the server runs out of descriptors: new connections then wait in the
-// kernel's accept queue behind the idle ones until those time out, and the server must serve
-// them then, without spinning on accept meanwhile. GRAINLAB_HALFOPEN_QUICK=1 (ctest) stops
-// there, without waiting for every wave of idle connections to time out.
+// it must raise SOFT to HARD (serve.cpp). With HARD below COUNT the server runs out of
+// descriptors: new connections then wait in the kernel's accept queue behind the idle ones
+// until those time out, and the server must serve them then, without spinning on accept
+// meanwhile. GRAINLAB_HALFOPEN_QUICK=1 (ctest) stops there, without waiting for every wave
+// of idle connections to time out.
 import { readFileSync } from 'node:fs';
 import net from 'node:net';
 
