@@ -52,6 +52,16 @@ int report(const RunSummary& summary, const RunOutput& output, const std::string
   return summary.status == RunStatus::Cancelled ? 3 : 1;
 }
 
+// A run whose last files could not be written (a full disk: OutputWriter::onFinish throws
+// after recording it in summary.json). A checkpoint it kept can still continue it.
+int failedWriting(const std::exception& e, const std::string& dir) {
+  std::cerr << "error: " << e.what() << "\n";
+  const std::string path = checkpointPath(dir);
+  if (fs::exists(path) || fs::exists(path + ".previous"))
+    std::cerr << "its last checkpoint is kept: grainlab resume " << dir << " continues it (with space to write)\n";
+  return 1;
+}
+
 void catchStopSignals() {
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
@@ -87,7 +97,12 @@ int runCommand(const std::vector<std::string>& args) {
   if (!force) limits.maxSeconds = 30 * 86400.0;
   const CheckpointPolicy checkpoint{checkpointPath(out), scene.output.checkpointEverySeconds, json.dump()};
   catchStopSignals();
-  const RunSummary summary = runScene(scene, output, limits, checkpoint);
+  RunSummary summary;
+  try {
+    summary = runScene(scene, output, limits, checkpoint);
+  } catch (const std::exception& e) {
+    return failedWriting(e, out);
+  }
   if (summary.refused) {
     std::cerr << "error: " << summary.error << " (grainlab run --force runs it anyway)\n";
     return 2;
@@ -118,7 +133,12 @@ int resumeCommand(const std::vector<std::string>& args) {
   }
   CliRunOutput output(dir, scene, &std::cerr);
   catchStopSignals();
-  const RunSummary summary = resumeRun(path, output, CheckpointPolicy{path, scene.output.checkpointEverySeconds, {}});
+  RunSummary summary;
+  try {
+    summary = resumeRun(path, output, CheckpointPolicy{path, scene.output.checkpointEverySeconds, {}});
+  } catch (const std::exception& e) {
+    return failedWriting(e, dir);
+  }
   if (!summary.resumeNote.empty()) std::cerr << "note: " << summary.resumeNote << "\n";
   if (summary.refused) {
     std::cerr << "error: cannot resume: " << summary.error << "\n";

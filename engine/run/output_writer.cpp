@@ -27,15 +27,31 @@ std::string num(double v) {
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
+void writeFileAtomically(const std::string& path, std::initializer_list<std::string_view> parts) {
+  // Plain write(2): every failure is seen with its errno (an ofstream reports a full disk at
+  // best as a failed stream, and not at all for what it writes as it closes).
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp);
+  auto fail = [&](int fd) {
+    const std::string why = std::strerror(errno);
+    if (fd >= 0) ::close(fd);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + why);
+  };
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail(-1);
+  for (std::string_view part : parts) {
+    while (!part.empty()) {
+      const ssize_t n = ::write(fd, part.data(), part.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) fail(fd);
+      part.remove_prefix(static_cast<std::size_t>(n));
+    }
   }
+  if (::close(fd) != 0) fail(-1);
   fs::rename(tmp, path);
 }
+
+void writeFileAtomically(const std::string& path, const std::string& text) { writeFileAtomically(path, {text}); }
 
 nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
   nlohmann::json s;
@@ -75,8 +91,25 @@ void OutputWriter::onStart(const Scene&, const World&) {
   started_ = std::chrono::steady_clock::now();
   fs::create_directories(dir_);
   series_.open(fs::path(dir_) / "series.csv", std::ios::binary | std::ios::trunc);
-  if (!series_) throw std::runtime_error("cannot write " + dir_ + "/series.csv");
-  series_ << seriesHeader() << '\n';
+  if (!series_) throw std::runtime_error("cannot write " + dir_ + "/series.csv: " + std::strerror(errno));
+  seriesGood_ = 0;
+  appendSeries(seriesHeader() + '\n');
+}
+
+void OutputWriter::appendSeries(const std::string& text) {
+  series_ << text;
+  series_.flush();  // a sample is rare; a reader (or a crash) sees every row so far
+  if (series_) {
+    seriesGood_ = static_cast<std::uint64_t>(series_.tellp());
+    return;
+  }
+  // A full disk: the run stops here, and series.csv keeps its whole rows only.
+  const std::string why = std::strerror(errno);
+  const fs::path path = fs::path(dir_) / "series.csv";
+  series_.close();
+  std::error_code ignored;
+  fs::resize_file(path, seriesGood_, ignored);
+  throw std::runtime_error("cannot write " + path.string() + ": " + why);
 }
 
 void OutputWriter::persistOutput(StateArchive& a) {
@@ -110,13 +143,11 @@ void OutputWriter::onResume(const Scene&, const World&) {
   }
   fs::resize_file(path, seriesBytes_);  // rows written after the checkpoint are written again
   series_.open(path, std::ios::binary | std::ios::app);
-  if (!series_) throw std::runtime_error("cannot write " + path.string());
+  if (!series_) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+  seriesGood_ = seriesBytes_;
 }
 
-void OutputWriter::onSample(const Sample& sample, const World&) {
-  series_ << formatSeriesRow(sample) << '\n';
-  series_.flush();  // a sample is rare; a reader (or a crash) sees every row so far
-}
+void OutputWriter::onSample(const Sample& sample, const World&) { appendSeries(formatSeriesRow(sample) + '\n'); }
 
 void OutputWriter::onProgress(double fraction, std::string_view stage, const World& world) {
   if (!progress_) return;
@@ -143,7 +174,14 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
                  num(v[k].y()) + "," + num(world.spins()[k]) + "," + num(world.boundingRadii()[k]) + "," +
                  (world.boundaryFlags()[k] ? "1" : "0") + "\n";
   }
-  writeFileAtomically((dir / "particles_final.csv").string(), particles);
+  // A final file that cannot be written (a full disk) fails the run: summary.json, small and
+  // written last, then says so if it can be written itself.
+  std::string failure;
+  try {
+    writeFileAtomically((dir / "particles_final.csv").string(), particles);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
 
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
@@ -161,13 +199,28 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
     }
     text += "\n";
   }
-  writeFileAtomically((dir / "contacts_final.csv").string(), text);
-
-  writeFileAtomically((dir / "summary.json").string(), summaryJson(summary, world).dump(2) + "\n");
-  if (progress_) {
-    *progress_ << summary.status << " in " << summary.wallSeconds << " s, " << summary.steps << " steps"
-               << (summary.error.empty() ? "" : ": " + summary.error) << "\n";
+  if (failure.empty()) {
+    try {
+      writeFileAtomically((dir / "contacts_final.csv").string(), text);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
   }
+
+  RunSummary written = summary;
+  if (!failure.empty()) {
+    written.status = "failed";
+    written.error = !summary.error.empty() ? summary.error + "; then " + failure
+                    : summary.status != "completed" ? "the run was " + summary.status + "; then " + failure
+                                                    : failure;
+    if (!summary.checkpointError.empty()) written.error += "; and its last checkpoint failed: " + summary.checkpointError;
+  }
+  writeFileAtomically((dir / "summary.json").string(), summaryJson(written, world).dump(2) + "\n");
+  if (progress_) {
+    *progress_ << written.status << " in " << written.wallSeconds << " s, " << written.steps << " steps"
+               << (written.error.empty() ? "" : ": " + written.error) << "\n";
+  }
+  if (!failure.empty()) throw std::runtime_error(written.error);
 }
 
 }  // namespace grainlab

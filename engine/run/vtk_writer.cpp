@@ -9,6 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "grainlab/output_writer.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab {
@@ -64,15 +65,7 @@ std::string cellSection(const char* tag, const Cells& cells, AppendedData& data)
 
 void writeAtomically(const fs::path& path, const std::string& head, const std::string& bytes,
                      const std::string& tail) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << head;
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out << tail;
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
+  writeFileAtomically(path.string(), {head, bytes, tail});
 }
 
 struct PolyDataFile {

@@ -34,13 +34,20 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
   // so every candidate of a particle lies in its own or the eight surrounding cells.
   double rmax = 0;
   Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  bool finite = true;
   for (int k = 0; k < n; ++k) {
     rmax = std::max(rmax, boundingRadii[k]);
     lo = lo.cwiseMin(positions[k]);
     hi = hi.cwiseMax(positions[k]);
+    finite = finite && positions[k].allFinite();  // (min and max pass a NaN over: lo and hi cannot tell)
   }
-  if (n && !(std::isfinite(lo.x()) && std::isfinite(lo.y()) && std::isfinite(hi.x()) && std::isfinite(hi.y()))) {
+  if (n && !(finite && std::isfinite(lo.x()) && std::isfinite(lo.y()) && std::isfinite(hi.x()) && std::isfinite(hi.y()))) {
     throw std::domain_error("non-finite particle position");
+  }
+  // Finite positions 1e308 apart span an infinite box, which no cell size divides. Both
+  // reached a float-to-int conversion of NaN below (fuzz_checkpoint, with a loaded state).
+  if (n && !(std::isfinite(hi.x() - lo.x()) && std::isfinite(hi.y() - lo.y()))) {
+    throw std::domain_error("particle positions too far apart to be a packing");
   }
   double cell = std::max(2 * rmax + skin, 1e-12);
   // A sparse scene (a particle flung far away) must not allocate a huge grid: widen the
@@ -119,14 +126,26 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
   valid_ = true;
 }
 
-void NeighborList::persist(StateArchive& a) {
+void NeighborList::persist(StateArchive& a, int particles, int walls) {
   a(valid_);
   a(skin_);
   a.bitwise(reference_);
   a(pairs_);
   if (a.loading()) {
+    // What the list's users index with must be in range, and the pairs sorted as a build
+    // leaves them (carrying history over relies on it): a checkpoint is refused otherwise.
+    // (A list not valid is rebuilt before it is read; its reference may be of another size.)
+    a.require(!valid_ || reference_.size() == static_cast<size_t>(particles), "the neighbour list's particle count differs");
+    for (size_t k = 0; k < pairs_.size(); ++k) {
+      const PairState& p = pairs_[k];
+      // A wall is j = -1 - w; a particle pair has i < j (build() lists each pair once).
+      const bool inRange = p.i >= 0 && p.i < particles && (p.j < 0 ? p.j >= -walls : p.j > p.i && p.j < particles);
+      const bool sorted = k == 0 || pairs_[k - 1].i < p.i || (pairs_[k - 1].i == p.i && pairs_[k - 1].j < p.j);
+      a.require(inRange && sorted, "neighbour pair " + std::to_string(k) + " (" + std::to_string(p.i) + ", " +
+                                       std::to_string(p.j) + ") is out of range or out of order");
+    }
     carriedFrom_.clear();  // read only right after a rebuild, which sets it
-    index(static_cast<int>(reference_.size()));
+    index(particles);
   }
 }
 

@@ -36,7 +36,9 @@ class NeighborList {
               std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved);
   /// The list as it stands (the pairs with their history, and where it was built): enough
   /// for the next update to rebuild, or not, exactly as this one would.
-  void persist(StateArchive& a);
+  /// Checkpoints. Loading refuses (CheckpointError) a list that does not fit a world of
+  /// `particles` particles and `walls` walls.
+  void persist(StateArchive& a, int particles, int walls);
   /// Forces a rebuild at the next update (particles or walls were added).
   void invalidate() { valid_ = false; }
 

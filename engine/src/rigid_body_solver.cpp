@@ -250,6 +250,23 @@ void RigidBodySolver::persist(StateArchive& a) {
   a.bitwise(contacts_);
   if (a.loading()) {
     a.require(bodies.size() == bodies_.size(), "box2d's body count differs from the scene's");
+    // Indices the solver reads with: a manifold's points (Box2D holds two at most) and the
+    // contacts' particles and walls.
+    for (const ContactState& c : contacts) {
+      a.require(c.points >= 0 && c.points <= b2_maxManifoldPoints, "a box2d contact has " + std::to_string(c.points) + " points");
+      a.require(std::isfinite(c.normalImpulse[0]) && std::isfinite(c.normalImpulse[1]) &&
+                    std::isfinite(c.tangentImpulse[0]) && std::isfinite(c.tangentImpulse[1]),
+                "a box2d contact's impulse is not finite");
+    }
+    // Box2D asserts that a body it creates has a finite pose and velocity.
+    for (const BodyState& b : bodies) {
+      a.require(std::isfinite(b.x) && std::isfinite(b.y) && std::isfinite(b.angle) && std::isfinite(b.vx) &&
+                    std::isfinite(b.vy) && std::isfinite(b.spin),
+                "a box2d body's position or velocity is not finite");
+    }
+    const int n = world_.size(), walls = static_cast<int>(world_.walls_.size());
+    for (const ContactRecord& r : contacts_)
+      a.require(r.i >= 0 && r.i < n && r.j >= -walls && r.j < n, "a box2d contact's particle or wall is out of range");
     build(bodies, contacts);
   }
 }

@@ -256,15 +256,30 @@ void World::persist(StateArchive& a) {
   a(cos_);
   a(sin_);
   a(profile_);
+  if (a.loading()) {
+    const size_t n = static_cast<size_t>(size());
+    a.require(position_.size() == n && velocity_.size() == n && force_.size() == n && angle_.size() == n &&
+                  spin_.size() == n && torque_.size() == n && cos_.size() == n && sin_.size() == n,
+              "a per-particle array's length differs from the particle count");
+  }
   if (rigid_) {
     a.section("box2d");
     rigid_->persist(a);
     return;
   }
   a.section("contacts");
-  neighbors_->persist(a);
+  neighbors_->persist(a, size(), static_cast<int>(walls_.size()));
   a.bitwise(polygonCache_);
   if (a.loading()) {
+    // The polygon cache is read per pair, by index, and its features index a polygon's
+    // corners: a cache that cannot have come from this world is refused.
+    a.require(polygons_.empty() || polygonCache_.size() == neighbors_->pairs().size(),
+              "the polygon contact cache's length differs from the pair count");
+    for (const CachedContact& c : polygonCache_) {
+      a.require(c.kind <= CachedContact::Kind::VertexDisc && c.reference >= 0 && c.reference < kMaxPolygonVertices &&
+                    c.incident >= 0 && c.incident < kMaxPolygonVertices,
+                "a polygon contact cache entry is out of range");
+    }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
   }

@@ -7,7 +7,7 @@
 namespace grainlab::server {
 
 Listener::Listener(net::io_context& ioc, const tcp::endpoint& endpoint, Application& app)
-    : ioc_(ioc), acceptor_(net::make_strand(ioc)), app_(app) {
+    : ioc_(ioc), acceptor_(net::make_strand(ioc)), retry_(acceptor_.get_executor()), app_(app) {
   acceptor_.open(endpoint.protocol());
   acceptor_.set_option(net::socket_base::reuse_address(true));
   acceptor_.bind(endpoint);
@@ -23,6 +23,7 @@ void Listener::stop() {
   net::post(acceptor_.get_executor(), [self = shared_from_this()] {
     beast::error_code ignored;
     self->acceptor_.close(ignored);
+    self->retry_.cancel();
   });
 }
 
@@ -34,8 +35,22 @@ void Listener::doAccept() {
 void Listener::onAccept(beast::error_code ec, tcp::socket socket) {
   if (ec == net::error::operation_aborted) return;  // stop()
   if (ec) {
-    std::cerr << "grainlab serve: accept: " << ec.message() << "\n";
-  } else {
+    // Said once per episode; accepting resumes by itself when a descriptor is free again
+    // (an idle connection times out after 30 s: http_session.cpp).
+    if (failedAccepts_++ == 0)
+      std::cerr << "grainlab serve: accept: " << ec.message() << "; retrying every 100 ms\n";
+    if (!acceptor_.is_open()) return;
+    retry_.expires_after(std::chrono::milliseconds(100));
+    retry_.async_wait([self = shared_from_this()](beast::error_code wait) {
+      if (!wait) self->doAccept();
+    });
+    return;
+  }
+  if (failedAccepts_ > 0) {
+    std::cerr << "grainlab serve: accepting again after " << failedAccepts_ << " failed attempts\n";
+    failedAccepts_ = 0;
+  }
+  {
     // Without it Nagle holds back the tail of every frame for a delayed ACK: a 30 KB frame's
     // round trip measured 46 ms instead of 0.75 ms.
     beast::error_code ignored;

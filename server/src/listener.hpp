@@ -1,5 +1,7 @@
 #pragma once
 // Accepts TCP connections and hands each to an HttpSession on its own strand.
+#include <boost/asio/steady_timer.hpp>
+#include <cstdint>
 #include <memory>
 
 #include "beast.hpp"
@@ -25,6 +27,11 @@ class Listener : public std::enable_shared_from_this<Listener> {
 
   net::io_context& ioc_;
   tcp::acceptor acceptor_;
+  /// After a failed accept (out of file descriptors: every connection held open, say), the
+  /// next waits on this rather than failing again at once: a loop on the error would take a
+  /// core and fill the log while the held connections time out.
+  net::steady_timer retry_;
+  std::uint64_t failedAccepts_ = 0;  ///< in a row, since the last accept that worked
   Application& app_;
   unsigned short port_ = 0;
 };

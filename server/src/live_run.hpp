@@ -46,6 +46,7 @@ class LiveRun {
     std::int64_t steps = 0;
     int particles = 0;
     std::optional<double> startedAt;
+    std::string error;  ///< why it ended failed or interrupted (once it has ended)
   };
   State state() const {
     std::lock_guard lock(mutex_);

@@ -1,6 +1,12 @@
 #include "repository.hpp"
 
+#include <fcntl.h>
+#include <sqlite3.h>
+#include <unistd.h>
+
 #include <cstring>
+#include <exception>
+#include <stdexcept>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -9,6 +15,11 @@
 
 namespace grainlab::server {
 namespace {
+
+// Disk space the server holds beside its database (`<db>.reserve`) and gives up when the
+// disk is full, so that the ends of the runs it then stops can still be written: a run's
+// end is one row, a few 4 KiB pages in the WAL.
+constexpr off_t kReserveBytes = 256 << 10;
 
 // Schema migrations: entry k takes user_version k to k + 1. Append, never edit.
 constexpr const char* kMigrations[] = {
@@ -217,6 +228,7 @@ struct Repository::Writer {
   Database db;
   std::map<const char*, std::unique_ptr<Statement>> statements;
   std::vector<std::function<void()>> afterCommit;
+  bool committed = true;  // while afterCommit runs: whether the transaction was committed
 };
 
 Repository::Repository(const std::string& path, Opener opener) : path_(path) {
@@ -247,6 +259,7 @@ Repository::Repository(const std::string& path, Opener opener) : path_(path) {
   if (opener == Opener::Server) {
     auto use = writer_->statement(sql::kInterruptUnfinished).use();
     use.run();
+    holdReserve();
   }
   writerThread_ = std::thread([this] { writerLoop(); });
 }
@@ -270,8 +283,74 @@ void Repository::enqueue(Job job) {
   jobsReady_.notify_one();
 }
 
+void Repository::holdReserve() {
+  const std::string reserve = path_ + ".reserve";
+  const int fd = ::open(reserve.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return;
+  const bool held = ::posix_fallocate(fd, 0, kReserveBytes) == 0;
+  ::close(fd);
+  if (held) reservePath_ = reserve;
+  else ::unlink(reserve.c_str());  // no room for it now: the next start tries again
+}
+
+bool Repository::releaseReserve() {
+  if (reservePath_.empty()) return false;
+  ::unlink(reservePath_.c_str());
+  std::cerr << "grainlab serve: the disk is full: " << reservePath_ << " (" << kReserveBytes / 1024
+            << " KiB held for this) is released so that the runs' ends can be recorded\n";
+  reservePath_.clear();
+  return true;
+}
+
+void Repository::writeFailed(const std::string& what) {
+  {
+    std::lock_guard lock(writeErrorMutex_);
+    lastWriteError_ = what;
+  }
+  // Said once per episode (a full disk fails every batch until space is freed).
+  if (writeFailures_++ == reportedFailures_) std::cerr << "grainlab serve: " << what << "\n";
+}
+
+std::string Repository::lastWriteError() const {
+  std::lock_guard lock(writeErrorMutex_);
+  return lastWriteError_;
+}
+
 void Repository::writerLoop() {
   Writer& w = *writer_;
+  // Runs jobs in one transaction; false if it could not be committed (then none of it was).
+  auto transaction = [&](std::deque<Job>::iterator begin, std::deque<Job>::iterator end) {
+    w.afterCommit.clear();
+    try {
+      w.db.exec("BEGIN IMMEDIATE");
+      for (auto job = begin; job != end; ++job) {
+        try {
+          (*job)(w);
+        } catch (const std::exception& e) {
+          writeFailed(std::string("database write failed: ") + e.what());
+        }
+        // SQLite may have rolled the whole transaction back (a full disk): the jobs after
+        // this one would each commit on their own, and run again below. The batch failed.
+        if (sqlite3_get_autocommit(w.db.handle())) throw SqliteError("the transaction was rolled back");
+      }
+      w.db.exec("COMMIT");
+      return true;
+    } catch (const std::exception& e) {
+      writeFailed(std::string("database commit failed: ") + e.what());
+      try {
+        w.db.exec("ROLLBACK");
+      } catch (const std::exception&) {
+        // Nothing was open: the BEGIN itself failed, or SQLite rolled back already.
+      }
+      return false;
+    }
+  };
+  auto callBack = [&](bool committed) {
+    w.committed = committed;
+    auto callbacks = std::move(w.afterCommit);
+    w.afterCommit.clear();
+    for (auto& callback : callbacks) callback();
+  };
   for (;;) {
     std::deque<Job> batch;
     {
@@ -282,27 +361,21 @@ void Repository::writerLoop() {
     }
     // One transaction per batch: a run's samples arrive many per second, and one COMMIT per
     // row would cost a WAL sync each.
-    try {
-      w.db.exec("BEGIN IMMEDIATE");
-      for (auto& job : batch) {
-        try {
-          job(w);
-        } catch (const std::exception& e) {
-          std::cerr << "grainlab serve: database write failed: " << e.what() << "\n";
-        }
-      }
-      w.db.exec("COMMIT");
-    } catch (const std::exception& e) {
-      std::cerr << "grainlab serve: database commit failed: " << e.what() << "\n";
-      try {
-        w.db.exec("ROLLBACK");
-      } catch (const std::exception&) {
-        // Nothing was open: the BEGIN itself failed.
-      }
+    const auto failuresBefore = writeFailures_.load();
+    const bool committed = transaction(batch.begin(), batch.end());
+    // Refused whole (a full disk): one transaction per job, in the space the reserve held,
+    // so that the small writes that matter most (a run's end, a new run) still get in.
+    // Jobs can run again: what a failed transaction did is rolled back, callbacks included.
+    if (const bool freed = !committed && releaseReserve(); !committed && (batch.size() > 1 || freed)) {
+      for (auto job = batch.begin(); job != batch.end(); ++job) callBack(transaction(job, job + 1));
+    } else {
+      callBack(committed);
     }
-    auto callbacks = std::move(w.afterCommit);
-    w.afterCommit.clear();
-    for (auto& callback : callbacks) callback();
+    if (writeFailures_.load() == failuresBefore && failuresBefore > reportedFailures_) {
+      std::cerr << "grainlab serve: database writes work again after " << failuresBefore - reportedFailures_
+                << " failed\n";
+      reportedFailures_ = failuresBefore;
+    }
   }
 }
 
@@ -415,10 +488,14 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
       use.run();
       id = w.db.lastInsertId();
     } catch (...) {
-      done->set_exception(std::current_exception());
+      // Told after the transaction, once: a refused batch runs its jobs again.
+      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
       return;
     }
-    w.afterCommit.push_back([done, id] { done->set_value(id); });
+    w.afterCommit.push_back([done, id, &w] {
+      if (w.committed) return done->set_value(id);
+      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
+    });
   });
   return future;
 }
@@ -481,7 +558,7 @@ void Repository::appendFrame(std::int64_t id, std::int64_t seq, std::int64_t ste
 }
 
 void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> afterCommit) {
-  enqueue([id, end = std::move(end), after = std::move(afterCommit)](Writer& w) mutable {
+  enqueue([id, end = std::move(end), after = std::move(afterCommit)](Writer& w) {
     {
       auto use = w.statement(sql::kFinishRun).use();
       use.bind(":id", id)
@@ -496,7 +573,7 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
       bindOptional(use, ":peak", end.peakPhiMobDeg);
       use.run();
     }
-    if (after) w.afterCommit.push_back(std::move(after));
+    if (after) w.afterCommit.push_back(after);  // (a copy: a refused batch runs its jobs again)
   });
 }
 
@@ -532,10 +609,11 @@ std::future<bool> Repository::deleteRun(std::int64_t id) {
         if (text == sql::kDeleteRun) deleted = w.db.changes() > 0;
       }
     } catch (...) {
-      done->set_exception(std::current_exception());
+      // Told after the transaction, once: a refused batch runs its jobs again.
+      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
       return;
     }
-    w.afterCommit.push_back([done, deleted] { done->set_value(deleted); });
+    w.afterCommit.push_back([done, deleted, &w] { done->set_value(deleted && w.committed); });
   });
   return future;
 }

@@ -3,6 +3,7 @@
 // connections (WAL lets them run beside the writer); every write goes through ONE writer
 // thread, which commits whatever has queued up in one transaction. Writes are applied in the
 // order they were queued, so "the run finished" is never committed before its last sample.
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -75,7 +76,8 @@ class Repository {
   void appendHistogram(std::int64_t id, std::int64_t seq, std::int64_t step, std::string json);
   void appendFrame(std::int64_t id, std::int64_t seq, std::int64_t step, double time,
                    std::string bytes);
-  /// `afterCommit` runs on the writer thread once the end is durable.
+  /// `afterCommit` runs on the writer thread once the end is durable, or once it is known
+  /// that it could not be stored (a full disk: findRun still shows the run unfinished).
   void finishRun(std::int64_t id, RunEnd end, std::function<void()> afterCommit);
   /// An interrupted (or failed) run about to resume: queued again, its error and end cleared.
   void requeueRun(std::int64_t id);
@@ -86,6 +88,12 @@ class Repository {
   std::future<bool> deleteRun(std::int64_t id);
   /// Resolves once everything queued before it is committed.
   std::future<void> flush();
+
+  /// Writes that failed so far (a statement or a whole batch's commit: a full disk), and the
+  /// last one's reason. A run stops when this moves (RunService), rather than go on while
+  /// nothing of it is stored.
+  std::uint64_t writeFailures() const { return writeFailures_.load(); }
+  std::string lastWriteError() const;
 
  private:
   struct Writer;
@@ -102,6 +110,15 @@ class Repository {
 
   std::mutex readersMutex_;
   std::vector<std::unique_ptr<Reader>> idleReaders_;
+
+  std::atomic<std::uint64_t> writeFailures_{0};
+  mutable std::mutex writeErrorMutex_;
+  std::string lastWriteError_;
+  std::uint64_t reportedFailures_ = 0;  // writer thread: failures up to the last episode's end
+  std::string reservePath_;             // the space held for a full disk (repository.cpp), if any
+  void writeFailed(const std::string& what);
+  void holdReserve();
+  bool releaseReserve();  ///< true if it freed the reserve now
 
   std::mutex jobsMutex_;
   std::condition_variable jobsReady_;

@@ -212,7 +212,12 @@ std::int64_t RunService::create(const std::string& body) {
   record.particles = particles;
   record.estimatedSeconds = cost.certainSeconds();
   record.createdAt = unixNow();
-  const std::int64_t id = repo_.insertRun(record).get();
+  std::int64_t id = 0;
+  try {
+    id = repo_.insertRun(record).get();
+  } catch (const std::exception&) {
+    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
+  }
   removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
 
   if (const auto submitted = enqueue(id, particles, std::move(scene));
@@ -275,7 +280,8 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   } else {
     try {
       WallTimeLimit limit(options_.maxRunSeconds);
-      ObserverTee watched{&observer, &limit};
+      DatabaseWatch database(repo_);
+      ObserverTee watched{&observer, &limit, &database};
       const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
@@ -284,6 +290,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
         summary.status = RunStatus::Failed;
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
                         ", the server's wall-time limit for a run (grainlab serve --max-run-seconds)";
+      }
+      if (summary.status == RunStatus::Cancelled && database.failed() && !run->stopRequested()) {
+        summary.status = RunStatus::Failed;
+        summary.error = "stopped: the database could not be written (" + repo_.lastWriteError() +
+                        "); what the run stored before is kept";
       }
     } catch (const std::exception& e) {
       summary.status = RunStatus::Failed;
@@ -332,9 +343,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
 }
 
 void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& end) {
-  // Runs once the end is durable: whoever sees "completed" finds the whole series stored.
+  // Runs once the end is durable (whoever sees "completed" finds the whole series stored),
+  // or once the database has refused it (a full disk).
   run->update([&](LiveRun::State& s) {
     s.status = end.status;
+    s.error = end.error;
     if (end.status == RunStatus::Completed) s.progress = 1;
   });
   const auto s = run->state();
@@ -342,10 +355,14 @@ void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& en
                                                      end.steps, end.error),
                                        MessageKind::Status));
   hub_.close(run->id());
+  // An end the database could not take (a full disk) is kept live, so the API still tells
+  // it, until a restart finds the run unfinished and marks it interrupted.
+  const auto stored = repo_.findRun(run->id());
+  const bool ended = stored && status::isTerminal(stored->status);
   bool deleted;
   {
     std::lock_guard lock(liveMutex_);
-    live_.erase(run->id());
+    if (ended || run->deleted()) live_.erase(run->id());
     deleted = run->deleted();
   }
   // DELETE arrived while the end was being written.
@@ -377,6 +394,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       merged.steps = s.steps;
       merged.particles = s.particles;
       if (s.startedAt) merged.startedAt = s.startedAt;
+      if (!s.error.empty()) merged.error = s.error;
     }
     cancelRequested = run->stopRequested();
   }

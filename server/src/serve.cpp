@@ -1,5 +1,7 @@
 #include "grainlab/server/serve.hpp"
 
+#include <sys/resource.h>
+
 #include <boost/asio/signal_set.hpp>
 #include <csignal>
 #include <iostream>
@@ -25,6 +27,14 @@ int serve(const ServeOptions& options) {
   } catch (const std::exception& e) {
     std::cerr << "grainlab serve: cannot open the database " << options.db << ": " << e.what() << "\n";
     return 1;
+  }
+
+  // Every connection holds a file descriptor. The soft limit is often 1,024, which 1,000 idle
+  // connections nearly exhaust (new ones then wait until idle ones time out); the hard limit
+  // is usually far higher, and raising the soft one to it needs no privilege.
+  if (rlimit files{}; getrlimit(RLIMIT_NOFILE, &files) == 0 && files.rlim_cur < files.rlim_max) {
+    files.rlim_cur = files.rlim_max;
+    setrlimit(RLIMIT_NOFILE, &files);
   }
 
   const int threads = std::max(1, options.ioThreads);

@@ -98,6 +98,33 @@ TEST(SweepSpec, ABadSpecNamesItsField) {
             "base.preset");
 }
 
+TEST(SweepSpec, AGridOfMoreRunsThanTheLimitIsRefusedBeforeItIsBuilt) {
+  // 40^6 = 4.1e9 runs: expandSweep would allocate them all (tests/server/fuzz/fuzz_sweep).
+  ojson vary = ojson::object();
+  ojson forty = ojson::array();
+  for (int k = 1; k <= 40; ++k) forty.push_back(k);
+  for (const char* path : {"seed", "material.friction", "material.density", "material.restitution",
+                           "material.local_damping", "stages.0.strain_rate"})
+    vary[path] = forty;
+  EXPECT_EQ(errorField([&] { parseSweepSpec(spec(vary)); }), "vary");
+  // 10 x 10^4 = the limit itself is a sweep; zip mode is never more than one list long.
+  ojson atLimit = {{"seed", ojson::array()}, {"material.friction", ojson::array()}};
+  for (int k = 0; k < 10; ++k) atLimit["seed"].push_back(k + 1);
+  for (int k = 0; k < 10000; ++k) atLimit["material.friction"].push_back(0.1 + 1e-5 * k);
+  EXPECT_EQ(parseSweepSpec(spec(atLimit)).axes.size(), 2u);
+  EXPECT_EQ(errorField([&] { parseSweepSpec(spec(vary, "zip")); }), "");
+}
+
+TEST(SweepSpec, APathThatAnotherPathsValueBreaksIsASceneErrorNamingIt) {
+  // Each path is tried alone when the spec is parsed; "seed" = 1 then leaves "seed.x" no
+  // object to go into (fuzz_sweep: it escaped as std::invalid_argument).
+  const ojson tiny = {{"name", "t"},
+                      {"particles", {{{"shape", "disc"}, {"radius", 0.002}, {"position", {0, 0}}}}},
+                      {"stages", {{{"type", "free"}, {"duration", 0.001}}}}};
+  const SweepSpec s = parseSweepSpec(ojson{{"base", tiny}, {"vary", {{"seed", {1}}, {"seed.x", {1}}}}});
+  EXPECT_EQ(errorField([&] { expandSweep(s); }), "vary.seed.x");
+}
+
 TEST(SweepSpec, ACombinationTheSceneRefusesIsNamedBeforeAnythingRuns) {
   // An unknown field and a value out of range are both the scene parser's word, relayed with
   // the varied path.

@@ -4,7 +4,9 @@
 // written to a temporary name and renamed, so a reader never sees half a file.
 #include <chrono>
 #include <fstream>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -28,9 +30,14 @@ class OutputWriter : public RunObserver {
   void onResume(const Scene&, const World&) override;
 
  private:
+  /// Appends to series.csv and flushes; if that fails (a full disk), cuts the file back to
+  /// its last whole row and throws, naming the file and the system's reason.
+  void appendSeries(const std::string& text);
+
   std::string dir_;
   std::ostream* progress_;
   std::ofstream series_;
+  std::uint64_t seriesGood_ = 0;   // series.csv's length after its last whole row
   std::uint64_t seriesBytes_ = 0;  // at the checkpoint being loaded
   int lastPercent_ = -1;
   std::chrono::steady_clock::time_point started_;  // for the time left
@@ -47,7 +54,10 @@ std::string seriesHeader();
 std::vector<std::string> splitSeriesRow(const std::string& line);
 
 /// Writes `text` to `path` through a temporary file and a rename: a reader (or a resume)
-/// sees the whole file or none of it. Throws std::runtime_error if it cannot.
+/// sees the whole file or none of it. Throws std::runtime_error naming `path` and the
+/// system's reason ("No space left on device") if it cannot, and leaves no temporary file.
 void writeFileAtomically(const std::string& path, const std::string& text);
+/// The same for a file made of several pieces, written one after the other.
+void writeFileAtomically(const std::string& path, std::initializer_list<std::string_view> parts);
 
 }  // namespace grainlab

@@ -38,6 +38,13 @@ class StateArchive {
   void operator()(T& value) {
     raw(&value, sizeof(T));
   }
+  /// A flag: one byte, 0 or 1 (any other byte would load as a bool that is neither).
+  void operator()(bool& b) {
+    unsigned char byte = b ? 1 : 0;
+    raw(&byte, 1);
+    if (loading_ && byte > 1) throw CheckpointError("checkpoint: a flag is " + std::to_string(byte) + ", neither 0 nor 1");
+    b = byte == 1;
+  }
   void operator()(Vec2& v) {
     (*this)(v.x());
     (*this)(v.y());

@@ -1,5 +1,6 @@
 #include "grainlab/studies/sweep_spec.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -104,6 +105,23 @@ SweepSpec parseSweepSpec(const nlohmann::ordered_json& spec) {
     }
     out.axes.push_back(std::move(axis));
   }
+  if (out.mode == SweepMode::Grid) {
+    // Counted before anything is built: six lists of 40 values make 4.1e9 runs, which
+    // expandSweep would try to allocate at once (found by tests/server/fuzz/fuzz_sweep).
+    double runs = 1;  // (a double: the product of the lists' lengths cannot overflow it)
+    std::string product;
+    for (const SweepAxis& axis : out.axes) {
+      runs *= static_cast<double>(axis.values.size());
+      product += (product.empty() ? "" : " x ") + std::to_string(axis.values.size());
+    }
+    if (runs > static_cast<double>(kMaxSweepRuns)) {
+      char count[32];
+      std::snprintf(count, sizeof count, "%.3g", runs);
+      throw SceneError("vary", "the grid has " + std::string(count) + " runs (" + product + "), more than the " +
+                                   std::to_string(kMaxSweepRuns) +
+                                   " a sweep may have: give fewer values, or vary them together with \"mode\": \"zip\"");
+    }
+  }
   if (out.mode == SweepMode::Zip) {
     for (const SweepAxis& axis : out.axes) {
       if (axis.values.size() != out.axes.front().values.size())
@@ -159,8 +177,15 @@ std::vector<SweepRun> expandSweep(const SweepSpec& spec) {
     }
     for (size_t a = 0; a < spec.axes.size(); ++a) {
       const nlohmann::json& value = spec.axes[a].values[pick[a]];
-      setAtPath(run.scene, spec.axes[a].path, value);  // its form was checked by parseSweepSpec
       run.parameters.emplace_back(spec.axes[a].path, value);
+      try {
+        setAtPath(run.scene, spec.axes[a].path, value);
+      } catch (const std::invalid_argument& e) {
+        // parseSweepSpec tried each path alone with its first value; here another path's
+        // value may have changed what this one goes through ("seed" = 2, then "seed.x").
+        throw SceneError("vary." + spec.axes[a].path,
+                         "run " + std::to_string(k + 1) + " (" + describe(run.parameters) + "): " + e.what());
+      }
     }
     try {
       parseScene(run.scene);

@@ -4,6 +4,7 @@
 //   { "base": { "preset": "circular-quick" } | SCENE,
 //     "vary": { "material.friction": [0.3, 0.5], "seed": [1, 2, 3] },
 //     "mode": "grid" | "zip" }
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,8 +38,13 @@ struct SweepRun {
   nlohmann::json scene;
 };
 
+/// The most runs a sweep may have: more is a mistake in the spec (every run takes seconds at
+/// least), and its runs would not fit in memory.
+inline constexpr std::size_t kMaxSweepRuns = 100000;
+
 /// Checks the spec's form (not yet the scenes it makes). Throws SceneError naming the spec's
-/// field ("base", "vary.material.friction", "mode") and the reason.
+/// field ("base", "vary.material.friction", "mode") and the reason; a grid of more than
+/// kMaxSweepRuns runs is refused on "vary".
 SweepSpec parseSweepSpec(const nlohmann::ordered_json& spec);
 /// Reads a spec file; a file that cannot be read or is not JSON is a SceneError on "(file)"/"(json)".
 SweepSpec loadSweepSpec(const std::string& path);
