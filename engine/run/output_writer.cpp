@@ -209,10 +209,11 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
 
   RunSummary written = summary;
   if (!failure.empty()) {
-    written.status = "failed";
+    written.status = RunStatus::Failed;
     written.error = !summary.error.empty() ? summary.error + "; then " + failure
-                    : summary.status != "completed" ? "the run was " + summary.status + "; then " + failure
-                                                    : failure;
+                    : summary.status != RunStatus::Completed
+                        ? "the run was " + std::string(toString(summary.status)) + "; then " + failure
+                        : failure;
     if (!summary.checkpointError.empty()) written.error += "; and its last checkpoint failed: " + summary.checkpointError;
   }
   writeFileAtomically((dir / "summary.json").string(), summaryJson(written, world).dump(2) + "\n");

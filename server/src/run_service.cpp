@@ -358,7 +358,7 @@ void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& en
   // An end the database could not take (a full disk) is kept live, so the API still tells
   // it, until a restart finds the run unfinished and marks it interrupted.
   const auto stored = repo_.findRun(run->id());
-  const bool ended = stored && status::isTerminal(stored->status);
+  const bool ended = stored && hasEnded(stored->status);
   bool deleted;
   {
     std::lock_guard lock(liveMutex_);

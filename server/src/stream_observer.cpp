@@ -1,6 +1,7 @@
 #include "stream_observer.hpp"
 
 #include <iostream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +41,8 @@ StreamObserver::StreamObserver(LiveRun& run, Repository& repo, StreamHub& hub,
       settings_(settings),
       frameInterval_(every(settings.framesPerSecond)),
       progressInterval_(every(settings.progressPerSecond)),
-      storeInterval_(every(1.0 / settings.storeProgressSeconds)) {}
+      storeInterval_(every(1.0 / settings.storeProgressSeconds)),
+      writeFailuresAtStart_(repo.writeFailures()) {}
 
 void StreamObserver::onStart(const Scene&, const World& world) {
   publishShapesAndFrame(world);
@@ -57,7 +59,13 @@ void StreamObserver::onResume(const Scene&, const World& world) {
 
 void StreamObserver::persistOutput(StateArchive& a) {
   a.section("server run");
-  if (!a.loading()) repo_.flush().get();  // the rows before the checkpoint are durable
+  if (!a.loading()) {
+    repo_.flush().get();  // the rows before the checkpoint are durable...
+    // ...unless a write failed (a full disk): a checkpoint counting rows that are not stored
+    // would resume with a gap, so this one is not written and the previous one stands.
+    if (repo_.writeFailures() != writeFailuresAtStart_)
+      throw std::runtime_error("the database could not be written (" + repo_.lastWriteError() + ")");
+  }
   a(samples_);
   a(storedFrames_);
   a(lastStoredStep_);

@@ -69,6 +69,7 @@ class StreamObserver : public RunObserver {
   std::int64_t lastStoredStep_ = -1;
   std::int64_t framesSent_ = 0;
   std::vector<ContactRecord> scratch_;
+  std::uint64_t writeFailuresAtStart_;  // the repository's count when this run began
 };
 
 }  // namespace grainlab::server

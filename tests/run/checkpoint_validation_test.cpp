@@ -45,7 +45,7 @@ void checkpointOf(const nlohmann::json& json, const std::string& path) {
   fs::remove(path + ".previous");
   CancelAt cancel(6);
   const RunSummary s = runScene(parseScene(json), cancel, {}, CheckpointPolicy{path, 0, json.dump()});
-  ASSERT_EQ(s.status, "cancelled") << s.error;
+  ASSERT_EQ(s.status, RunStatus::Cancelled) << s.error;
   ASSERT_TRUE(fs::exists(path));
 }
 
@@ -65,7 +65,7 @@ TEST(CheckpointValidation, RealCheckpointsOfEveryKindOfWorldLoadAndRunOn) {
     checkpointOf(c.scene, path);
     CancelAt cancel(3);  // 400 more steps from the loaded state
     const RunSummary resumed = resumeRun(path, cancel);
-    EXPECT_EQ(resumed.status, "cancelled") << resumed.error;
+    EXPECT_EQ(resumed.status, RunStatus::Cancelled) << resumed.error;
     EXPECT_FALSE(resumed.refused);
     EXPECT_GT(resumed.steps, 1200);
     fs::remove(path);
@@ -98,7 +98,7 @@ TEST(CheckpointValidation, APairIndexOutOfRangeIsRefusedNotRead) {
 
   CancelAt cancel(1);
   const RunSummary resumed = resumeRun(path, cancel);
-  EXPECT_EQ(resumed.status, "failed");
+  EXPECT_EQ(resumed.status, RunStatus::Failed);
   EXPECT_TRUE(resumed.refused);
   EXPECT_NE(resumed.error.find("neighbour pair 0"), std::string::npos) << resumed.error;
   fs::remove(path);
