@@ -87,4 +87,6 @@ for ((k = 1; k <= kills; ++k)); do
   fi
 done
 echo "$kills runs killed, $torn kills during a checkpoint write, $failures not identical after resuming"
+# For scripts/reliability's table.
+echo "figure {\"section\":\"checkpoints\",\"name\":\"kill -9 of grainlab run (and of every other resume), $kills runs\",\"value\":\"$((kills - failures))/$kills identical after resuming; $torn kills during a checkpoint write\",\"unit\":\"\",\"target\":\"all identical\",\"ok\":$( ((failures == 0)) && echo true || echo false)}"
 ((failures == 0))

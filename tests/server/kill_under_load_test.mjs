@@ -85,6 +85,13 @@ await server.stop();
 
 console.log(`${kills} kills: ${lostRows} rows lost, ${changedRows} changed, ${duplicatedRows} duplicated; ` +
   `${notResumable} runs not resumable; ${identical.filter(Boolean).length} of ${ids.length} runs identical to the uninterrupted one`);
+const allWell = lostRows === 0 && changedRows === 0 && duplicatedRows === 0 && notResumable === 0 && identical.every(Boolean);
+// For scripts/reliability's table.
+console.log(`figure ${JSON.stringify({
+  section: 'server kill', name: `kill -9 of the server, 2 runs x ${WATCHERS} watchers, ${kills} times`,
+  value: `${lostRows} lost, ${changedRows} changed, ${duplicatedRows} duplicated; ` +
+    `${identical.filter(Boolean).length}/${ids.length} identical after resuming`,
+  unit: '', target: '0 lost or duplicated, all identical', ok: allWell })}`);
 check(`the server was killed ${kills} times with runs going`, kills >= Math.min(KILLS, 1));
 check('no stored row was lost', lostRows === 0, `${lostRows}`);
 check('none changed', changedRows === 0, `${changedRows}`);
