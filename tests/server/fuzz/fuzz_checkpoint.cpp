@@ -158,7 +158,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::cerr << "resumeRun threw instead of failing the run: " << e.what() << "\n";
     std::abort();
   }
-  const bool known = summary.status == RunStatus::Failed || summary.status == RunStatus::Cancelled || summary.status == RunStatus::Completed;
+  using grainlab::RunStatus;
+  const bool known = summary.status == RunStatus::Failed || summary.status == RunStatus::Cancelled ||
+                     summary.status == RunStatus::Completed;
   if (!known || (summary.status == RunStatus::Failed && summary.error.empty())) {
     std::cerr << "resumeRun ended '" << summary.status << "' with error '" << summary.error << "'\n";
     std::abort();
