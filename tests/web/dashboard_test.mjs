@@ -4,17 +4,12 @@
 // ensemble's mean with its 95 % band), and get the API's
 // validation error beside the friction field for a negative friction; the loading paths in the
 // form, and a rotation charted against its angle. No console errors.
-import {
-  canvasHash, canvasInk, check, finish, launchBrowser, screenshot, startServer, waitUntil, watchConsole,
-} from './harness.mjs';
+import { canvasHash, canvasInk, check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
 
 const PAPER_PRESETS = ['circular', 'elongated-random', 'elongated-bedding-0', 'elongated-bedding-30',
   'elongated-bedding-60', 'elongated-bedding-90'];
 
-const server = await startServer();
-const browser = await launchBrowser();
-let exitCode = 1;
-try {
+await runBrowserTest([], async ({ server, browser }) => {
   const page = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
   page.setDefaultTimeout(30000);
   const consoleWatch = watchConsole(page);
@@ -345,13 +340,4 @@ try {
     JSON.stringify(turned) === JSON.stringify([0, 20, 60, null, 110]), JSON.stringify(turned));
 
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
-  exitCode = finish();
-} catch (error) {
-  check('the test runs to its end', false, error.stack);
-  exitCode = finish();
-} finally {
-  await browser.close();
-  const code = await server.stop();
-  if (code !== 0) console.log(`note: the server exited with ${code}\n${server.log()}`);
-}
-process.exit(exitCode);
+});

@@ -162,3 +162,27 @@ export async function canvasHash(page, selector) {
     return hash;
   });
 }
+
+// ---- a whole browser test ----
+/**
+ * Starts `grainlab serve` (with `serverArgs`) and Chromium, runs `body({server, browser})`,
+ * counts a throw as a failed check, always closes both (saying if the server exited badly),
+ * and exits with the checks' verdict.
+ */
+export async function runBrowserTest(serverArgs, body) {
+  const server = await startServer(serverArgs);
+  const browser = await launchBrowser();
+  let exitCode = 1;
+  try {
+    await body({ server, browser });
+    exitCode = finish();
+  } catch (error) {
+    check('the test runs to its end', false, error.stack);
+    exitCode = finish();
+  } finally {
+    await browser.close();
+    const code = await server.stop();
+    if (code !== 0) console.log(`note: the server exited with ${code}\n${server.log()}`);
+  }
+  process.exit(exitCode);
+}

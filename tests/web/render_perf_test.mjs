@@ -6,16 +6,13 @@
 //  - the run view's seven charts with 10,000 samples each, appended to and redrawn once per
 //    animation frame as a live run does — at least 20 updates/s.
 // The measured rates are printed for the log (ctest keeps it).
-import { check, finish, launchBrowser, screenshot, startServer } from './harness.mjs';
+import { check, runBrowserTest, screenshot } from './harness.mjs';
 
 const MIN_FPS = 20;
 const POLYGONS = 2500;
 const CHART_POINTS = 10000;
 
-const server = await startServer();
-const browser = await launchBrowser();
-let exitCode = 1;
-try {
+await runBrowserTest([], async ({ server, browser }) => {
   const page = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
   const errors = [];
   page.on('pageerror', (error) => errors.push(error.message));
@@ -199,12 +196,4 @@ try {
   await page.evaluate(() => document.querySelector('.particle-canvas-box').remove());
   await screenshot(page, 'perf-charts');
   check('no page errors', errors.length === 0, errors.join('\n'));
-  exitCode = finish();
-} catch (error) {
-  check('the test runs to its end', false, error.stack);
-  exitCode = finish();
-} finally {
-  await browser.close();
-  await server.stop();
-}
-process.exit(exitCode);
+});

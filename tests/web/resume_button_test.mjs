@@ -2,7 +2,7 @@
 // stop, with a checkpoint) shows "Resume run"; clicking it continues the run from where it
 // stopped (the server says at which step; the stored series grows from the same first rows), and
 // the button is gone while the run is live. No console errors.
-import { check, finish, launchBrowser, startServer, waitUntil, watchConsole } from './harness.mjs';
+import { check, runBrowserTest, waitUntil, watchConsole } from './harness.mjs';
 
 // Three discs on two threads: estimated at about 1.8 s, it runs some 30 times longer (the
 // pool's synchronisation at every step), so a 2 s limit always stops it.
@@ -20,10 +20,7 @@ const OVERTIME = {
   output: { sample_interval: 0.002 },
 };
 
-const server = await startServer(['--max-run-seconds', '2']);
-const browser = await launchBrowser();
-let exitCode = 1;
-try {
+await runBrowserTest(['--max-run-seconds', '2'], async ({ server, browser }) => {
   const { base } = server;
   const json = async (path, init) => (await fetch(`${base}${path}`, init)).json();
   const { id } = await json('/api/runs', { method: 'POST', body: JSON.stringify(OVERTIME) });
@@ -59,12 +56,4 @@ try {
     rows.length > rowsAtStop.length && JSON.stringify(rows.slice(0, rowsAtStop.length)) === JSON.stringify(rowsAtStop),
     `${rowsAtStop.length} -> ${rows.length} rows`);
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
-  exitCode = finish();
-} catch (error) {
-  check('the test runs to its end', false, error.stack);
-  exitCode = finish();
-} finally {
-  await browser.close();
-  await server.stop();
-}
-process.exit(exitCode);
+});
