@@ -3,12 +3,13 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "grainlab/errors.hpp"
-#include "grainlab/world.hpp"
 
 namespace grainlab {
 namespace {
@@ -62,20 +63,32 @@ b2ContactID swapped(b2ContactID id) {
 
 }  // namespace
 
-RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
-  const int n = world.size();
+RigidBodySolver::RigidBodySolver(ParticleStore& particles, const Material& material, int velocityIterations,
+                                 int positionIterations, Profile& profile)
+    : particles_(particles),
+      material_(material),
+      velocityIterations_(velocityIterations),
+      positionIterations_(positionIterations),
+      profile_(profile) {}
+
+void RigidBodySolver::initialize(double dt) {
+  dt_ = dt;
+  contacts_.clear();
+  lengthScale_ = massScale_ = 1;
+  origin_ = Vec2::Zero();
+  const int n = particles_.size();
   double radius = 0, mass = 0;
   for (int k = 0; k < n; ++k) {
-    radius += world.boundingRadius_[k];
-    mass += world.mass_[k];
-    origin_ += world.position_[k];
+    radius += particles_.boundingRadius[k];
+    mass += particles_.mass[k];
+    origin_ += particles_.position[k];
   }
   if (n > 0) {
     lengthScale_ = n / radius;
     massScale_ = n / mass;
     origin_ /= n;
   }
-  b2_ = std::make_unique<b2World>(toB2(world.gravity_ * lengthScale_));
+  b2_ = std::make_unique<b2World>(toB2(particles_.gravity * lengthScale_));
   b2_->SetAllowSleeping(false);
   b2_->SetContinuousPhysics(false);
   b2_->SetSubStepping(false);
@@ -86,28 +99,27 @@ RigidBodySolver::RigidBodySolver(World& world) : world_(world) {
   // the slop.
   double extent = 0;
   for (int k = 0; k < n; ++k) {
-    extent = std::max(extent, (world.position_[k] - origin_).norm() + world.boundingRadius_[k]);
+    extent = std::max(extent, (particles_.position[k] - origin_).norm() + particles_.boundingRadius[k]);
   }
   halfWidth_ = 2 * extent * lengthScale_ + 1000;
   std::vector<BodyState> bodies(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
-    const b2Vec2 x = toB2((world.position_[k] - origin_) * lengthScale_), v = toB2(world.velocity_[k] * lengthScale_);
-    bodies[k] = {x.x, x.y, static_cast<float>(world.angle_[k]), v.x, v.y, static_cast<float>(world.spin_[k])};
+    const b2Vec2 x = toB2((particles_.position[k] - origin_) * lengthScale_), v = toB2(particles_.velocity[k] * lengthScale_);
+    bodies[k] = {x.x, x.y, static_cast<float>(particles_.angle[k]), v.x, v.y, static_cast<float>(particles_.spin[k])};
   }
   build(bodies, {});
 }
 
 void RigidBodySolver::build(const std::vector<BodyState>& bodies, const std::vector<ContactState>& contacts) {
-  const World& world = world_;
   bodies_.clear();
   fixtures_.clear();
-  b2_ = std::make_unique<b2World>(toB2(world.gravity_ * lengthScale_));
+  b2_ = std::make_unique<b2World>(toB2(particles_.gravity * lengthScale_));
   b2_->SetAllowSleeping(false);
   b2_->SetContinuousPhysics(false);
   b2_->SetSubStepping(false);
   b2_->SetWarmStarting(true);
-  for (int k = 0; k < world.size(); ++k) addParticle(k, bodies[static_cast<size_t>(k)]);
-  for (int w = 0; w < static_cast<int>(world.walls_.size()); ++w) addWall(w, halfWidth_);
+  for (int k = 0; k < particles_.size(); ++k) addParticle(k, bodies[static_cast<size_t>(k)]);
+  for (int w = 0; w < static_cast<int>(particles_.walls.size()); ++w) addWall(w, halfWidth_);
   if (contacts.empty()) return;
   restoreWarmStart(contacts);
 }
@@ -115,8 +127,7 @@ void RigidBodySolver::build(const std::vector<BodyState>& bodies, const std::vec
 RigidBodySolver::~RigidBodySolver() = default;
 
 void RigidBodySolver::addParticle(int k, const BodyState& state) {
-  const World& w = world_;
-  const Motion motion = w.motion_[k];
+  const Motion motion = particles_.motion[k];
   b2BodyDef def;
   def.type = motion == Motion::Dynamic ? b2_dynamicBody : motion == Motion::Kinematic ? b2_kinematicBody : b2_staticBody;
   def.position.Set(state.x, state.y);
@@ -128,25 +139,25 @@ void RigidBodySolver::addParticle(int k, const BodyState& state) {
   b2Body* body = b2_->CreateBody(&def);
 
   b2FixtureDef fixture;
-  fixture.friction = static_cast<float>(w.material_.friction);
-  fixture.restitution = static_cast<float>(w.material_.restitution);
-  fixture.density = 0;  // the mass is set below, from the World's
+  fixture.friction = static_cast<float>(material_.friction);
+  fixture.restitution = static_cast<float>(material_.restitution);
+  fixture.density = 0;  // the mass is set below, from the store's
   fixture.userData.pointer = encode(k);
   b2CircleShape circle;
   b2PolygonShape polygon;
-  if (w.shape_[k] == ShapeKind::Disc) {
-    circle.m_radius = static_cast<float>(w.boundingRadius_[k] * lengthScale_);
+  if (particles_.shape[k] == ShapeKind::Disc) {
+    circle.m_radius = static_cast<float>(particles_.boundingRadius[k] * lengthScale_);
     fixture.shape = &circle;
   } else {
-    polygon = shrunkPolygon(w.polygon(k), lengthScale_, b2_polygonRadius);
+    polygon = shrunkPolygon(particles_.polygonOf(k), lengthScale_, b2_polygonRadius);
     fixture.shape = &polygon;
   }
   fixtures_.push_back(body->CreateFixture(&fixture));
   if (motion == Motion::Dynamic) {
     b2MassData mass;
-    mass.mass = static_cast<float>(w.mass_[k] * massScale_);
+    mass.mass = static_cast<float>(particles_.mass[k] * massScale_);
     mass.center.SetZero();  // the body's origin is the particle's centroid
-    mass.I = static_cast<float>(w.inertia_[k] * massScale_ * lengthScale_ * lengthScale_);
+    mass.I = static_cast<float>(particles_.inertia[k] * massScale_ * lengthScale_ * lengthScale_);
     body->SetMassData(&mass);
   }
   bodies_.push_back(body);
@@ -156,7 +167,7 @@ void RigidBodySolver::addWall(int index, double halfWidth) {
   // A half-plane as a static box behind its surface, as deep as it is wide. The body sits at
   // the surface's point nearest the origin so the box's own coordinates stay small. The box
   // face is set back by the skin, so the skinned face is the wall's surface.
-  const Wall& wall = world_.walls_[static_cast<size_t>(index)];
+  const Wall& wall = particles_.walls[static_cast<size_t>(index)];
   const Vec2 n = wall.normal;
   const Vec2 q = (wall.point - origin_) * lengthScale_;
   const Vec2 foot = q.dot(n) * n;  // the surface's point nearest the origin
@@ -172,8 +183,8 @@ void RigidBodySolver::addWall(int index, double halfWidth) {
   b2Body* body = b2_->CreateBody(&def);
   b2FixtureDef fixture;
   fixture.shape = &box;
-  fixture.friction = static_cast<float>(world_.material_.friction);
-  fixture.restitution = static_cast<float>(world_.material_.restitution);
+  fixture.friction = static_cast<float>(material_.friction);
+  fixture.restitution = static_cast<float>(material_.restitution);
   fixture.userData.pointer = encode(-1 - index);
   fixtures_.push_back(body->CreateFixture(&fixture));
 }
@@ -229,7 +240,7 @@ void RigidBodySolver::restoreWarmStart(const std::vector<ContactState>& contacts
       m->points[p].tangentImpulse = s.tangentImpulse[p];
     }
   }
-  b2_.get()->*member(InvDt0Tag{}) = 1.0f / static_cast<float>(world_.timestep());  // as after a step of dt
+  b2_.get()->*member(InvDt0Tag{}) = 1.0f / static_cast<float>(dt_);  // as after a step of dt
 }
 
 void RigidBodySolver::rebuild() {
@@ -239,7 +250,9 @@ void RigidBodySolver::rebuild() {
   build(bodies, contacts);
 }
 
-void RigidBodySolver::persist(StateArchive& a) {
+void RigidBodySolver::persist(StateArchive& a, double dt) {
+  a.section("box2d");
+  dt_ = dt;
   a.same(lengthScale_, "box2d's length scale");
   a.same(massScale_, "box2d's mass scale");
   std::vector<BodyState> bodies;
@@ -264,56 +277,59 @@ void RigidBodySolver::persist(StateArchive& a) {
                     std::isfinite(b.vy) && std::isfinite(b.spin),
                 "a box2d body's position or velocity is not finite");
     }
-    const int n = world_.size(), walls = static_cast<int>(world_.walls_.size());
+    const int n = particles_.size(), walls = static_cast<int>(particles_.walls.size());
     for (const ContactRecord& r : contacts_)
       a.require(r.i >= 0 && r.i < n && r.j >= -walls && r.j < n, "a box2d contact's particle or wall is out of range");
     build(bodies, contacts);
   }
 }
 
-double RigidBodySolver::apparentStiffness(double dt) const {
+double RigidBodySolver::contactStiffness(double dt) const {
   const double meanMass = 1.0 / massScale_;
-  return 4.0 / 3.0 * world_.settings_.velocityIterations * meanMass / (dt * dt);
+  return 4.0 / 3.0 * velocityIterations_ * meanMass / (dt * dt);
 }
 
-void RigidBodySolver::setFriction(double mu) {
+void RigidBodySolver::frictionChanged(double mu) {
+  if (!b2_) return;  // not built yet: initialize() reads the material's friction
   for (b2Fixture* f : fixtures_) f->SetFriction(static_cast<float>(mu));
   for (b2Contact* c = b2_->GetContactList(); c; c = c->GetNext()) c->ResetFriction();
 }
 
-void RigidBodySolver::step(double dt) {
-  World& w = world_;
-  const int n = w.size();
+void RigidBodySolver::step(double dt, std::int64_t step) {
+  const auto start = std::chrono::steady_clock::now();
+  dt_ = dt;
+  const int n = particles_.size();
   const double L = lengthScale_;
   for (int k = 0; k < n; ++k) {
-    if (w.motion_[k] != Motion::Kinematic) continue;
+    if (particles_.motion[k] != Motion::Kinematic) continue;
     b2Body* b = bodies_[static_cast<size_t>(k)];
-    b->SetTransform(toB2((w.position_[k] - origin_) * L), static_cast<float>(w.angle_[k]));
-    b->SetLinearVelocity(toB2(w.velocity_[k] * L));
-    b->SetAngularVelocity(static_cast<float>(w.spin_[k]));
+    b->SetTransform(toB2((particles_.position[k] - origin_) * L), static_cast<float>(particles_.angle[k]));
+    b->SetLinearVelocity(toB2(particles_.velocity[k] * L));
+    b->SetAngularVelocity(static_cast<float>(particles_.spin[k]));
   }
-  b2_->Step(static_cast<float>(dt), w.settings_.velocityIterations, w.settings_.positionIterations);
+  b2_->Step(static_cast<float>(dt), velocityIterations_, positionIterations_);
   for (int k = 0; k < n; ++k) {
     const b2Body* b = bodies_[static_cast<size_t>(k)];
-    switch (w.motion_[k]) {
+    switch (particles_.motion[k]) {
       case Motion::Dynamic:
-        w.position_[k] = origin_ + fromB2(b->GetPosition()) / L;
-        w.angle_[k] = b->GetAngle();
-        w.velocity_[k] = fromB2(b->GetLinearVelocity()) / L;
-        w.spin_[k] = b->GetAngularVelocity();
+        particles_.position[k] = origin_ + fromB2(b->GetPosition()) / L;
+        particles_.angle[k] = b->GetAngle();
+        particles_.velocity[k] = fromB2(b->GetLinearVelocity()) / L;
+        particles_.spin[k] = b->GetAngularVelocity();
         break;
       case Motion::Kinematic:  // in double, as the DEM's drift; Box2D gets it next step
-        w.position_[k] += w.velocity_[k] * dt;
-        w.angle_[k] += w.spin_[k] * dt;
+        particles_.position[k] += particles_.velocity[k] * dt;
+        particles_.angle[k] += particles_.spin[k] * dt;
         break;
       case Motion::Fixed: break;
     }
   }
   gatherContacts(dt);
+  if (step % kRebuildEvery == 0) rebuild();
+  profile_.forces += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void RigidBodySolver::gatherContacts(double dt) {
-  World& w = world_;
   const double L = lengthScale_;
   const double toForce = 1.0 / (massScale_ * L * dt);  // Box2D impulse → N per metre
   contacts_.clear();
@@ -352,21 +368,23 @@ void RigidBodySolver::gatherContacts(double dt) {
     r.overlap = depth / L;
     contacts_.push_back(r);
   }
-  // The World's forces and torques: the contact forces above and gravity, about the centroids.
-  for (int k = 0; k < w.size(); ++k) {
-    w.force_[k] = w.motion_[k] == Motion::Dynamic ? Vec2(w.mass_[k] * w.gravity_) : Vec2::Zero();
-    w.torque_[k] = 0;
+  // The store's forces and torques: the contact forces above and gravity, about the centroids.
+  for (int k = 0; k < particles_.size(); ++k) {
+    particles_.force[k] = particles_.motion[k] == Motion::Dynamic ? Vec2(particles_.mass[k] * particles_.gravity) : Vec2::Zero();
+    particles_.torque[k] = 0;
   }
   for (const ContactRecord& r : contacts_) {
     const Vec2 f = r.fn * r.normal + r.ft * perp(r.normal);  // on j from i
-    w.force_[r.i] -= f;
-    w.torque_[r.i] -= cross(r.point - w.position_[r.i], f);
+    particles_.force[r.i] -= f;
+    particles_.torque[r.i] -= cross(r.point - particles_.position[r.i], f);
     if (r.j >= 0) {
-      w.force_[r.j] += f;
-      w.torque_[r.j] += cross(r.point - w.position_[r.j], f);
+      particles_.force[r.j] += f;
+      particles_.torque[r.j] += cross(r.point - particles_.position[r.j], f);
     }
   }
 }
+
+double RigidBodySolver::packingTimestep(int*, int*) const { return std::numeric_limits<double>::infinity(); }
 
 void RigidBodySolver::contacts(std::vector<ContactRecord>& out) const {
   out = contacts_;
@@ -375,13 +393,13 @@ void RigidBodySolver::contacts(std::vector<ContactRecord>& out) const {
   });
 }
 
-void RigidBodySolver::checkOverlaps() const {
+void RigidBodySolver::checkOverlaps(std::int64_t step, double, double) const {
   for (const ContactRecord& r : contacts_) {
-    const double size = r.j >= 0 ? std::min(world_.boundingRadius_[r.i], world_.boundingRadius_[r.j])
-                                 : world_.boundingRadius_[r.i];
+    const double size = r.j >= 0 ? std::min(particles_.boundingRadius[r.i], particles_.boundingRadius[r.j])
+                                 : particles_.boundingRadius[r.i];
     if (r.overlap > 0.5 * size) {
       std::ostringstream os;
-      os << "runaway overlap at step " << world_.stepCount() << ": ";
+      os << "runaway overlap at step " << step << ": ";
       if (r.j >= 0) os << "particles " << r.i << " and " << r.j;
       else os << "particle " << r.i << " and wall " << r.wallIndex();
       os << " overlap by " << 100 * r.overlap / size

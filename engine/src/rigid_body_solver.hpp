@@ -1,15 +1,15 @@
 #pragma once
 // The box2d engine ("solver": {"engine": "box2d"}): Box2D's rigid-body solver (b2World,
 // sequential impulses with velocity and position iterations) moves the particles instead of
-// grainlab's springs and leapfrog. The World keeps its arrays as the one state the rest of
-// the program reads: this class mirrors them into a b2World once, steps it, and copies
-// positions, angles, velocities and spins back after every step, with the contact forces
-// (from the solver's impulses) into the World's forces and torques.
+// grainlab's springs and leapfrog. The ParticleStore stays the one state the rest of the
+// program reads: this class mirrors it into a b2World once, steps it, and copies positions,
+// angles, velocities and spins back after every step, with the contact forces (from the
+// solver's impulses) into the store's forces and torques.
 //
 // What it maps, and how:
 //  - Bodies: dynamic particles are dynamic bodies, kinematic ones kinematic bodies (their
 //    velocities, set by World::setKinematicVelocity, are forwarded every step; their
-//    positions are integrated in double by the World, as the DEM does), fixed ones static.
+//    positions are integrated in double here, as the DEM does), fixed ones static.
 //    Walls are static boxes behind their surface. No sleeping, no continuous collision.
 //  - Units: Box2D is single precision and tuned for bodies of 0.1-10 units. Lengths are
 //    scaled so the mean particle radius is one unit, masses so the mean mass is one unit,
@@ -20,7 +20,7 @@
 //    polygon, except within the skin at the corners (a 120° corner is rounded off by
 //    0.16 skin = 0.0016 units). Walls' boxes are set back by the skin likewise. Discs have
 //    no skin. Set() may reorder vertices: nothing here relies on their order.
-//  - Mass: each body gets the World's mass and inertia (b2Body::SetMassData), not Box2D's
+//  - Mass: each body gets the store's mass and inertia (b2Body::SetMassData), not Box2D's
 //    from the shrunk shape.
 //  - Material: friction μ on every fixture (Box2D mixes √(μ₁μ₂) = μ); setFriction updates
 //    the fixtures and every existing contact. Restitution e on every fixture, applied by
@@ -39,8 +39,12 @@
 #include <vector>
 
 #include "grainlab/contact.hpp"
+#include "grainlab/material.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/particle_store.hpp"
+#include "grainlab/profile.hpp"
 #include "grainlab/state_archive.hpp"
+#include "solver.hpp"
 
 class b2World;
 class b2Body;
@@ -48,9 +52,7 @@ class b2Fixture;
 
 namespace grainlab {
 
-class World;
-
-class RigidBodySolver {
+class RigidBodySolver final : public Solver {
  public:
   /// The default box2d timestep is this multiple of the DEM's (timestep_safety × the critical
   /// timestep of the scene's springs). See docs/speed-accuracy.md for why.
@@ -59,30 +61,24 @@ class RigidBodySolver {
   /// which a box2d run can be checkpointed). A rebuild costs about what a few steps do.
   static constexpr int kRebuildEvery = 1000;
 
-  /// Builds the b2World from the World's current particles and walls.
-  explicit RigidBodySolver(World& world);
-  ~RigidBodySolver();
+  RigidBodySolver(ParticleStore& particles, const Material& material, int velocityIterations,
+                  int positionIterations, Profile& profile);
+  ~RigidBodySolver() override;
   RigidBodySolver(const RigidBodySolver&) = delete;
   RigidBodySolver& operator=(const RigidBodySolver&) = delete;
 
-  /// One b2World::Step of dt, then the World's state, forces and torques from it.
-  void step(double dt);
-  void setFriction(double mu);
-  /// The touching contacts of the last step, sorted by (i, j) as the DEM path's.
-  void contacts(std::vector<ContactRecord>& out) const;
-  /// Throws SimulationError if two bodies overlap by more than half the smaller's radius:
-  /// the solver could not keep them apart.
-  void checkOverlaps() const;
+  /// Builds the b2World from the store's current particles and walls.
+  void initialize(double dt) override;
+  /// One b2World::Step of dt, then the store's state, forces and torques from it; every
+  /// kRebuildEvery steps, rebuild().
+  void step(double dt, std::int64_t step) override;
+  /// Updates the fixtures and every existing contact.
+  void frictionChanged(double mu) override;
 
-  double lengthScale() const { return lengthScale_; }  ///< Box2D units per metre
-
-  /// Tears the b2World down and builds it again from its bodies' float state and its
-  /// contacts' warm-start impulses, bodies in particle order: afterwards the b2World depends
-  /// only on that state, not on its history.
-  void rebuild();
-  /// Saves that state, or loads it and rebuilds (World::persist; call at a rebuild step).
-  void persist(StateArchive& a);
-
+  double timestepScale() const override { return kTimestepScale; }
+  /// Rigid contacts have no spring: no explicit-integration bound.
+  bool boundedByCriticalTimestep() const override { return false; }
+  double packingTimestep(int* particle, int* contacts) const override;
   /// The stiffness a contact appears to have under slow loading, N/m: (4 n_v / 3) m̄ / dt²
   /// for n_v velocity iterations and the mean particle mass m̄. A rigid contact has none, but
   /// the iteration-limited solver lets a packing take up a boundary strain within Box2D's
@@ -90,9 +86,30 @@ class RigidBodySolver {
   /// this stiffness. Measured on circular-quick after consolidation (p against volumetric
   /// strain, dp/dε_v = 2.5-3.2 m̄/dt² at 8 iterations, 6.4-6.8 at 20, for dt from 2.4e-5 to
   /// 1.5e-4 s; the packing's modulus is k/2 as for the DEM's springs).
-  double apparentStiffness(double dt) const;
+  double contactStiffness(double dt) const override;
+  /// Box2D's velocities are its positions' (it integrates them first).
+  bool velocitiesLagHalfStep() const override { return false; }
+
+  /// The touching contacts of the last step, sorted by (i, j) as the DEM path's.
+  void contacts(std::vector<ContactRecord>& out) const override;
+  /// Rigid contacts store no energy.
+  double elasticEnergy() const override { return 0; }
+  /// Throws SimulationError if two bodies overlap by more than half the smaller's radius:
+  /// the solver could not keep them apart.
+  void checkOverlaps(std::int64_t step, double dt, double criticalDt) const override;
+
+  /// Only at the steps where the b2World was rebuilt from its own state.
+  bool resumable(std::int64_t steps) const override { return steps % kRebuildEvery == 0; }
+  /// Saves its state, or loads it and rebuilds (call at a rebuild step).
+  void persist(StateArchive& a, double dt) override;
+
+  double lengthScale() const { return lengthScale_; }  ///< Box2D units per metre
 
  private:
+  // Tears the b2World down and builds it again from its bodies' float state and its
+  // contacts' warm-start impulses, bodies in particle order: afterwards the b2World depends
+  // only on that state, not on its history.
+  void rebuild();
   // A body's state as Box2D holds it, in Box2D units and single precision.
   struct BodyState {
     float x, y, angle, vx, vy, spin;
@@ -112,7 +129,11 @@ class RigidBodySolver {
   void addWall(int w, double halfWidth);
   void gatherContacts(double dt);
 
-  World& world_;
+  ParticleStore& particles_;
+  const Material& material_;  // the World's: its friction changes between stages
+  const int velocityIterations_, positionIterations_;
+  Profile& profile_;
+  double dt_ = 0;           // s, of the last step, or of the next after a load
   double lengthScale_ = 1;  // Box2D units per m
   double massScale_ = 1;    // Box2D units per kg (per metre of thickness)
   Vec2 origin_ = Vec2::Zero();

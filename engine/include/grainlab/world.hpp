@@ -1,9 +1,9 @@
 #pragma once
-// The DEM world: particle state in contiguous arrays, a Verlet neighbour list, contact forces
-// from a pluggable contact law, and explicit leapfrog integration in double precision.
-#include <atomic>
+// The world a scene runs in: the particles (a ParticleStore, the one owner of their state),
+// the solver that moves them (grainlab's DEM, or Box2D's rigid-body solver: engine/src/
+// solver.hpp), the clock, and the checks and energies read from them. Analysis reads it
+// through const views only.
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -12,23 +12,15 @@
 #include "grainlab/material.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/particle.hpp"
+#include "grainlab/particle_store.hpp"
 #include "grainlab/profile.hpp"
 #include "grainlab/shape.hpp"
 #include "grainlab/wall.hpp"
 
 namespace grainlab {
 
-class NeighborList;
 class StateArchive;
-class PolygonCollider;
-class RigidBodySolver;
-class WorkerPool;
-struct PairState;
-struct ContactGeometry;
-struct DiscContact;
-struct TouchingDiscs;
-struct TouchingShapes;
-struct CachedContact;
+class Solver;
 
 struct WorldSettings {
   /// Verlet skin as a fraction of the mean bounding radius: pairs within this gap are kept
@@ -37,9 +29,9 @@ struct WorldSettings {
   /// Threads for the force computation (the caller's included). Results are bit-identical
   /// for any count: the parallel path adds each particle's forces in the serial order.
   int threads = 1;
-  /// Dem: grainlab's own contact laws and integrator. Box2d: Box2D's rigid-body solver moves
-  /// the particles (RigidBodySolver, engine/src/rigid_body_solver.hpp) and the World's arrays
-  /// mirror its bodies after every step; the DEM members below are then unused.
+  /// Dem: grainlab's own contact laws and integrator (DemSolver, engine/src/dem_solver.hpp).
+  /// Box2d: Box2D's rigid-body solver moves the particles (RigidBodySolver, engine/src/
+  /// rigid_body_solver.hpp) and the particle store mirrors its bodies after every step.
   enum class Engine { Dem, Box2d };
   Engine engine = Engine::Dem;
   int velocityIterations = 8, positionIterations = 3;  ///< box2d only
@@ -57,13 +49,13 @@ class World {
   int addParticle(const ParticleSpec& spec);
   int addWall(const Wall& wall);
 
-  void setGravity(const Vec2& g) { gravity_ = g; }
+  void setGravity(const Vec2& g) { particles_.gravity = g; }
   /// Friction may change between stages (the paper compacts with μ = 0).
   void setFriction(double mu);
   const Material& material() const { return material_; }
 
   /// Timestep in s. Until set, it is timestepSafety × criticalTimestep() (box2d: × the
-  /// rigid-body timestep scale, RigidBodySolver::timestepScale).
+  /// rigid-body timestep scale, RigidBodySolver::kTimestepScale).
   void setTimestep(double dt) { timestep_ = dt; }
   double timestep() const;
   void setTimestepSafety(double safety) { timestepSafety_ = safety; }
@@ -110,27 +102,27 @@ class World {
   void checkHealth() const;
 
   // ---- const views (for analysis and output; never a way to change the physics) ----
-  int size() const { return static_cast<int>(position_.size()); }
+  int size() const { return particles_.size(); }
   std::int64_t stepCount() const { return steps_; }
   double time() const { return time_; }
-  std::span<const Vec2> positions() const { return position_; }
-  std::span<const double> angles() const { return angle_; }
-  std::span<const Vec2> velocities() const { return velocity_; }
-  std::span<const double> spins() const { return spin_; }
-  std::span<const Vec2> forces() const { return force_; }   ///< contact + body forces of the last step
-  std::span<const double> torques() const { return torque_; }
-  std::span<const double> masses() const { return mass_; }
-  std::span<const double> inertias() const { return inertia_; }
-  std::span<const double> boundingRadii() const { return boundingRadius_; }
-  std::span<const ShapeKind> shapes() const { return shape_; }
-  std::span<const Motion> motions() const { return motion_; }
-  std::span<const unsigned char> boundaryFlags() const { return boundary_; }
-  std::span<const Wall> walls() const { return walls_; }
+  std::span<const Vec2> positions() const { return particles_.position; }
+  std::span<const double> angles() const { return particles_.angle; }
+  std::span<const Vec2> velocities() const { return particles_.velocity; }
+  std::span<const double> spins() const { return particles_.spin; }
+  std::span<const Vec2> forces() const { return particles_.force; }   ///< contact + body forces of the last step
+  std::span<const double> torques() const { return particles_.torque; }
+  std::span<const double> masses() const { return particles_.mass; }
+  std::span<const double> inertias() const { return particles_.inertia; }
+  std::span<const double> boundingRadii() const { return particles_.boundingRadius; }
+  std::span<const ShapeKind> shapes() const { return particles_.shape; }
+  std::span<const Motion> motions() const { return particles_.motion; }
+  std::span<const unsigned char> boundaryFlags() const { return particles_.boundary; }
+  std::span<const Wall> walls() const { return particles_.walls; }
   /// The body-frame polygon of particle i (which must be a polygon).
-  const Polygon& polygon(int i) const { return polygons_[static_cast<size_t>(shapeIndex_[i])]; }
+  const Polygon& polygon(int i) const { return particles_.polygonOf(i); }
   /// Solid area of particle i, m².
-  double area(int i) const;
-  bool hasPolygons() const { return !polygons_.empty(); }
+  double area(int i) const { return particles_.area(i); }
+  bool hasPolygons() const { return !particles_.polygons.empty(); }
   /// World-frame vertices of polygon particle i.
   void worldVertices(int i, std::vector<Vec2>& out) const;
 
@@ -144,83 +136,22 @@ class World {
   const Profile& profile() const { return profile_; }
 
  private:
-  friend class RigidBodySolver;  // mirrors the arrays below into its b2World and back
-  // Particle k's stiffest contact spring as seen through its rotational inertia (N/m).
-  double stiffestSpring(int k, bool tangential) const;
-  void forEachParticleRange(const std::function<void(int, int)>& body);
-  void computeForces();
-  void advance(double dt, int begin, int end);
-  Vec2 bodyForce(int k) const { return motion_[k] == Motion::Dynamic ? Vec2(mass_[k] * gravity_) : Vec2::Zero(); }
-  void assignDamping();
-  // A particle's force before its contacts: its weight.
-  void resetForce(int k) {
-    force_[k] = bodyForce(k);
-    torque_[k] = 0;
-  }
-  void assignDeferredSlots();
-  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
-  void carryPolygonCache();
-  void applyLocalDamping(int k);
-  template <class Law, bool kDiscsOnly>
-  void pairForces(const Law& law);
-  template <bool kDiscsOnly, class Force, class Apart>
-  void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
-  template <class Law>
-  void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
-                    double& torqueI, double& torqueJ) const;
-  template <class Law>
-  void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
-                    double& torqueI, double& torqueJ) const;
+  // Names the particle if the state is not finite (after a solver found a position it could
+  // not place in its grid), then lets the original error go on.
+  template <class Action>
+  void namingDivergence(Action&& action);
 
-  Material material_;
+  Material material_;  // the solvers read it; friction changes between stages
   WorldSettings settings_;
-  Vec2 gravity_ = Vec2::Zero();
   double timestep_ = 0;
   double timestepSafety_ = 0.2;
   std::int64_t steps_ = 0;
   double time_ = 0;
   bool prepared_ = false;
-  double skin_ = 0;  // m
   double criticalTimestep_ = 0;  // s, cached by initialize()
-
-  // Hot state, one entry per particle.
-  std::vector<Vec2> position_, velocity_, force_;
-  std::vector<double> angle_, spin_, torque_;
-  std::vector<double> cos_, sin_;        // of angle_, refreshed each step for polygons only
-  std::vector<double> invMass_, invInertia_;
-  // Cold data.
-  std::vector<double> mass_, inertia_, boundingRadius_;
-  std::vector<ShapeKind> shape_;
-  std::vector<Motion> motion_;
-  std::vector<unsigned char> boundary_;
-  std::vector<int> shapeIndex_;          // index into polygons_ or -1 for discs
-  std::vector<Polygon> polygons_;
-  std::vector<Wall> walls_;
-
-  std::unique_ptr<NeighborList> neighbors_;
-  // Set by the step's integration pass when some particle moved far enough to need a new
-  // neighbour list; each thread checks its own particles, so none reads the others' lines.
-  std::atomic<bool> neighborsOutdated_{true};
-  std::unique_ptr<PolygonCollider> polygonCollider_;
-  std::unique_ptr<WorkerPool> pool_;     // null when serial
-  // Parallel force loop: a pair's share of force on a particle is added at once by the thread
-  // that owns the particle (the one computing its first pair); a share computed by another
-  // thread waits in a slot and is added after the loop, in pair order.
-  struct DeferredForce {
-    Vec2 force = Vec2::Zero();            // to add to the particle's force
-    double torque = 0;                    // to add to its torque
-    bool touching = false;                // false: the pair was apart, nothing to add
-  };
-  std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
-  std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
-  std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
-  // Scratch for the two-pass force loop: each pair's room for its contact (one of the two,
-  // by whether the scene has polygons).
-  std::vector<TouchingDiscs> touchingDiscs_;
-  std::vector<TouchingShapes> touchingShapes_;
-  std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
-  std::unique_ptr<RigidBodySolver> rigid_;  // box2d engine only
   Profile profile_;
+  ParticleStore particles_;
+  std::unique_ptr<Solver> solver_;  // built with the World; refers to the three above
 };
 
 }  // namespace grainlab

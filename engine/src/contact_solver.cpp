@@ -1,0 +1,447 @@
+#include "contact_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "contact_law.hpp"
+#include "grainlab/errors.hpp"
+#include "grainlab/state_archive.hpp"
+#include "worker_pool.hpp"
+
+namespace grainlab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// The law at a touching pair whose relative motion is m, with unit normal n and tangent t:
+// the force on j from i. Records the pair's history and last forces. Both contact forms
+// below end here.
+template <class Law>
+inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt) {
+  p.fn = law.normal.force(m, p.dampN);
+  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history);
+  p.overlap = m.overlap;
+  return p.fn * n + p.ft * t;
+}
+
+// A pair that does not touch keeps no history and reports no force.
+void clearContact(PairState& p) {
+  p.history = 0;
+  p.fn = p.ft = p.overlap = 0;
+}
+
+}  // namespace
+
+ContactSolver::ContactSolver(ParticleStore& particles, const Material& material, double skinFraction,
+                             WorkerPool* pool, Profile& profile)
+    : particles_(particles), material_(material), skinFraction_(skinFraction), pool_(pool), profile_(profile) {}
+
+ContactSolver::~ContactSolver() = default;
+
+void ContactSolver::initialize() {
+  // Polygon features are decided with Box2D's tolerances at the scale at which Box2D would
+  // see the particles: about one unit (its tuning range).
+  const std::vector<Polygon>& polygons = particles_.polygons;
+  double meanPolygonRadius = 0;
+  for (const Polygon& p : polygons) meanPolygonRadius += p.circumradius;
+  const double scale = polygons.empty() ? 1.0 : polygons.size() / meanPolygonRadius;
+  polygonCollider_ = std::make_unique<PolygonCollider>(scale);
+  for (const Polygon& p : polygons) polygonCollider_->add(p);
+  double meanRadius = 0;
+  for (double r : particles_.boundingRadius) meanRadius += r;
+  const int n = particles_.size();
+  skin_ = n ? skinFraction_ * meanRadius / n : 0.0;
+  neighbors_.invalidate();
+}
+
+bool ContactSolver::movedOutOfSkin(int begin, int end) const {
+  return neighbors_.outdated(particles_.position, begin, end);
+}
+
+void ContactSolver::clearTangentialHistory() {
+  for (PairState& p : neighbors_.pairs()) p.history = 0;
+}
+
+// The contact between the two members of a pair, whatever their shapes. A pair involving a
+// polygon goes through its kept features (PolygonCollider), which `cache` keeps.
+ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* cache) const {
+  const int i = p.i, j = p.j;
+  const auto& x = particles_.position;
+  const auto& radius = particles_.boundingRadius;
+  const auto& shape = particles_.shape;
+  const auto& cosA = particles_.cosAngle;
+  const auto& sinA = particles_.sinAngle;
+  if (j < 0) {
+    const Wall& wall = particles_.walls[static_cast<size_t>(-1 - j)];
+    return shape[i] == ShapeKind::Disc ? collideDiscWall(x[i], radius[i], wall)
+                                       : collidePolygonWall(particles_.polygonOf(i), x[i], cosA[i], sinA[i], wall);
+  }
+  const bool iDisc = shape[i] == ShapeKind::Disc, jDisc = shape[j] == ShapeKind::Disc;
+  if (iDisc && jDisc) return collideDiscs(x[i], radius[i], x[j], radius[j]);
+  const double reach = radius[i] + radius[j];
+  if ((x[j] - x[i]).squaredNorm() >= reach * reach) {
+    if (cache) cache->kind = CachedContact::Kind::None;  // bounding circles apart
+    return {};
+  }
+  const Pose pi{x[i], cosA[i], sinA[i]}, pj{x[j], cosA[j], sinA[j]};
+  const int si = particles_.shapeIndex[i], sj = particles_.shapeIndex[j];
+  if (!iDisc && !jDisc) return polygonCollider_->collidePolygons(si, pi, sj, pj, cache);
+  if (!iDisc) return polygonCollider_->collidePolygonDisc(si, pi, x[j], radius[j], cache);
+  ContactGeometry g = polygonCollider_->collidePolygonDisc(sj, pj, x[i], radius[i], cache);
+  g.normal = -g.normal;
+  return g;
+}
+
+// The force of a touching pair with geometry g: F on j from i (−F on i), and the torques it
+// exerts about each centroid. Updates the pair's history and last forces.
+template <class Law>
+inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, const Law& law, double dt, Vec2& F,
+                                        double& ti, double& tj) const {
+  const int i = p.i, j = p.j;
+  const Vec2* x = particles_.position.data();
+  const Vec2* v = particles_.velocity.data();
+  const double* w = particles_.spin.data();
+  const Vec2& n = g.normal;
+  const Vec2 t = perp(n);
+  const Vec2 ri = g.point - x[i];
+  Vec2 dv = -(v[i] + cross(w[i], ri));
+  Vec2 rj = Vec2::Zero();
+  if (j >= 0) {
+    rj = g.point - x[j];
+    dv += v[j] + cross(w[j], rj);
+  }
+  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt);
+  ti = cross(ri, F);
+  tj = cross(rj, F);
+}
+
+// The same force for a disc contact, with the lever vectors folded in: r_i = armI·n and
+// r_j = −armJ·n, so ω × r adds −(ω_i armI + ω_j armJ) to the tangential relative velocity and
+// nothing to the normal one, and r × F is armI·f_t and −armJ·f_t. The exact values of the
+// terms the general form rounds (a normal force's torque about a disc's centre is zero), in
+// about half its operations.
+template <class Law>
+inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, const Law& law, double dt, Vec2& F,
+                                        double& ti, double& tj) const {
+  const int i = p.i, j = p.j;
+  const Vec2* v = particles_.velocity.data();
+  const double* w = particles_.spin.data();
+  const Vec2& n = c.normal;
+  const Vec2 t = perp(n);
+  Vec2 dv = -v[i];
+  double spin = w[i] * c.armI;
+  if (j >= 0) {
+    dv += v[j];
+    spin += w[j] * c.armJ;
+  }
+  F = lawForce(p, ContactMotion{c.overlap, dv.dot(n), dv.dot(t) - spin}, n, t, law, dt);
+  ti = c.armI * p.ft;
+  tj = -c.armJ * p.ft;
+}
+
+// Calls force(k, g) for each touching pair k in [begin, end), in pair order, and apart(k) for
+// each other one (after clearing its state), in two passes: every touching pair's geometry
+// into scratch, then the forces. A contact's force hangs on a long chain of dependent
+// operations (for discs a square root and a division, for polygons the clipping's division),
+// and whether a pair touches is a branch the processor cannot predict; in one pass the core
+// overlapped only about two pairs' chains. Split, each chain is half as long and more pairs are
+// in flight: a settled disc pile's step got 1.2-1.3x faster, a polygon pile's about 1.1x
+// (measured together with the one-division clipping), with bit-identical results.
+template <bool kDiscsOnly, class Force, class Apart>
+inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Apart&& apart) {
+  PairState* pairs = neighbors_.pairs().data();
+  int n = 0;
+  if constexpr (kDiscsOnly) {
+    TouchingDiscs* scratch = touchingDiscs_.data() + begin;  // this range's own part
+    const Vec2* x = particles_.position.data();
+    const double* radius = particles_.boundingRadius.data();
+    const Wall* walls = particles_.walls.data();
+    for (int k = begin; k < end; ++k) {
+      PairState& p = pairs[k];
+      const DiscContact c = p.j >= 0 ? touchDiscs(x[p.i], radius[p.i], x[p.j], radius[p.j])
+                                     : touchDiscWall(x[p.i], radius[p.i], walls[-1 - p.j]);
+      if (c.overlap <= 0) {
+        clearContact(p);
+        apart(k);
+        continue;
+      }
+      scratch[n].contact = c;
+      scratch[n].pair = k;
+      ++n;
+    }
+    for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].contact);
+  } else {
+    TouchingShapes* scratch = touchingShapes_.data() + begin;
+    for (int k = begin; k < end; ++k) {
+      const ContactGeometry g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)]);
+      if (g.overlap <= 0) {
+        clearContact(pairs[k]);
+        apart(k);
+        continue;
+      }
+      scratch[n].contact = g;
+      scratch[n].pair = k;
+      ++n;
+    }
+    for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].contact);
+  }
+}
+
+// One thread, or several each on a contiguous slice of the pairs. A particle's shares from
+// the slice holding its first pair are added at once, in pair order; shares computed in later
+// slices wait in their slots (assignDeferredSlots) and are added after the loop, in pair order.
+// Every particle sees the same additions in the same order whatever the number of threads, so
+// the result is bit-identical. With one thread there are no slots: every share is added at
+// once. In a scene whose particle indices follow space, almost nothing waits.
+template <class Law, bool kDiscsOnly>
+void ContactSolver::pairForces(const Law& law, double dt) {
+  std::vector<PairState>& pairs = neighbors_.pairs();
+  if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());
+  else touchingShapes_.resize(pairs.size());
+  Vec2* f = particles_.force.data();
+  double* tau = particles_.torque.data();
+  const int* slot = pool_ ? deferredSlot_.data() : nullptr;
+  DeferredForce* deferred = deferred_.data();
+  // `threaded` is std::true_type when slices may share particles: one thread's loop then
+  // carries no test for slots at all.
+  auto pairRange = [&](auto threaded, int begin, int end) {
+    constexpr bool kThreaded = decltype(threaded)::value;
+    forEachTouching<kDiscsOnly>(begin, end, [&](int k, const auto& g) {
+      PairState& p = pairs[static_cast<size_t>(k)];
+      Vec2 F;
+      double ti, tj;
+      contactForce(p, g, law, dt, F, ti, tj);
+      // x − y and x + (−y) are the same IEEE operation: a waiting share is stored negated.
+      if (const int s = kThreaded ? slot[2 * k] : -1; s < 0) {
+        f[p.i] -= F;
+        tau[p.i] -= ti;
+      } else {
+        deferred[s] = {-F, -ti, true};
+      }
+      if (p.j < 0) return;
+      if (const int s = kThreaded ? slot[2 * k + 1] : -1; s < 0) {
+        f[p.j] += F;
+        tau[p.j] += tj;
+      } else {
+        deferred[s] = {F, tj, true};
+      }
+    }, [&](int k) {
+      if constexpr (kThreaded) {
+        if (const int s = slot[2 * k]; s >= 0) deferred[s].touching = false;
+        if (const int s = slot[2 * k + 1]; s >= 0) deferred[s].touching = false;
+      }
+    });
+  };
+  const int pairCount = static_cast<int>(pairs.size());
+  if (pool_) pool_->parallelFor(pairCount, [&](int begin, int end) { pairRange(std::true_type{}, begin, end); });
+  else pairRange(std::false_type{}, 0, pairCount);
+  // The waiting shares, then each particle's local damping (in the same pass over the
+  // particles: both are the end of the particle's force).
+  if (deferred_.empty() && material_.localDamping == 0) return;
+  auto finish = [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      const int first = slot ? deferredStart_[k] : 0, last = slot ? deferredStart_[k + 1] : 0;
+      for (int s = first; s < last; ++s) {
+        const DeferredForce& d = deferred[s];
+        if (!d.touching) continue;
+        f[k] += d.force;
+        tau[k] += d.torque;
+      }
+      if (material_.localDamping > 0) applyLocalDamping(k);
+    }
+  };
+  if (pool_) pool_->parallelFor(particles_.size(), finish);
+  else finish(0, particles_.size());
+}
+
+// Which pair ends the parallel force loop adds at once and which wait, for the current pair
+// list and number of threads. Particle k belongs to the slice holding its first pair; a share
+// computed in any other slice (a later one: pairs are in order) gets a slot.
+void ContactSolver::assignDeferredSlots() {
+  const int pairCount = static_cast<int>(neighbors_.pairs().size());
+  const int threads = pool_->threads();
+  const int n = particles_.size();
+  const std::vector<int>& start = neighbors_.adjacencyStart();
+  const std::vector<int>& entries = neighbors_.adjacency();
+  std::vector<int> sliceEnd(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t) sliceEnd[static_cast<size_t>(t)] = WorkerPool::sliceBegin(pairCount, t + 1, threads);
+  auto sliceOf = [&](int pair) {
+    return static_cast<int>(std::upper_bound(sliceEnd.begin(), sliceEnd.end(), pair) - sliceEnd.begin());
+  };
+  deferredSlot_.assign(2 * static_cast<size_t>(pairCount), -1);
+  deferredStart_.assign(static_cast<size_t>(n) + 1, 0);
+  int slots = 0;
+  for (int k = 0; k < n; ++k) {
+    deferredStart_[k] = slots;
+    if (start[k] == start[k + 1]) continue;
+    const int owner = sliceOf(entries[static_cast<size_t>(start[k])] >> 1);
+    for (int e = start[k]; e < start[k + 1]; ++e) {
+      const int pairEnd = entries[static_cast<size_t>(e)];  // pair × 2, + 1 where k is its j
+      if (sliceOf(pairEnd >> 1) != owner) deferredSlot_[static_cast<size_t>(pairEnd)] = slots++;
+    }
+  }
+  deferredStart_[n] = slots;
+  deferred_.assign(static_cast<size_t>(slots), DeferredForce{});
+}
+
+void ContactSolver::assignDamping() {
+  const double zeta = dampingRatio(material_.restitution);
+  const double kn = material_.normalStiffness, kt = material_.tangentialStiffness;
+  const std::vector<double>& mass = particles_.mass;
+  const std::vector<Motion>& motion = particles_.motion;
+  for (PairState& p : neighbors_.pairs()) {
+    // Effective mass of the pair: against a wall or an immovable particle, the particle's own.
+    const double mi = mass[p.i];
+    double m = mi;
+    if (p.j >= 0 && motion[p.j] == Motion::Dynamic && motion[p.i] == Motion::Dynamic) {
+      m = mi * mass[p.j] / (mi + mass[p.j]);
+    } else if (p.j >= 0 && motion[p.i] != Motion::Dynamic) {
+      m = mass[p.j];
+    }
+    p.dampN = 2 * zeta * std::sqrt(m * kn);
+    p.dampT = 2 * zeta * std::sqrt(m * kt);
+  }
+}
+
+void ContactSolver::carryPolygonCache() {
+  const std::vector<int>& from = neighbors_.carriedFrom();
+  std::vector<CachedContact> carried(from.size());
+  for (size_t k = 0; k < from.size(); ++k) {
+    if (from[k] >= 0 && static_cast<size_t>(from[k]) < polygonCache_.size()) carried[k] = polygonCache_[static_cast<size_t>(from[k])];
+  }
+  polygonCache_.swap(carried);
+}
+
+void ContactSolver::computeForces(double dt, bool moved) {
+  auto t0 = Clock::now();
+  const bool rebuilt = neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
+                                         particles_.walls, skin_, moved);
+  const bool polygons = !particles_.polygons.empty();
+  if (rebuilt) {
+    assignDamping();
+    if (polygons) carryPolygonCache();
+    ++profile_.rebuilds;
+    if (pool_) assignDeferredSlots();  // the slots follow the pair list
+  }
+  auto t1 = Clock::now();
+  // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
+  // polygon code, a frictionless one keeps no tangential history.
+  const LinearSpringDashpot normal{material_.normalStiffness};
+  if (material_.friction == 0) {
+    const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
+    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+  } else {
+    const ContactLaw<LinearSpringDashpot, CundallStrack> law{
+        normal, {material_.tangentialStiffness, material_.friction}};
+    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+  }
+  auto t2 = Clock::now();
+  profile_.neighbors += seconds(t0, t1);
+  profile_.forces += seconds(t1, t2);
+  if (polygonCollider_) profile_.featureSearches = polygonCollider_->featureSearches();
+}
+
+void ContactSolver::applyLocalDamping(int k) {
+  // Cundall's non-viscous damping: each force component is reduced by α|F| against the
+  // direction of motion, so it removes energy without slowing a steady drift.
+  if (particles_.motion[k] != Motion::Dynamic) return;
+  const double a = material_.localDamping;
+  auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
+  Vec2& f = particles_.force[k];
+  const Vec2& v = particles_.velocity[k];
+  f.x() -= a * std::abs(f.x()) * sign(v.x());
+  f.y() -= a * std::abs(f.y()) * sign(v.y());
+  double& torque = particles_.torque[k];
+  torque -= a * std::abs(torque) * sign(particles_.spin[k]);
+}
+
+void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
+  const std::vector<PairState>& pairs = neighbors_.pairs();
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
+    if (p.overlap <= 0) continue;
+    // The cached answer as the forces saw it (positions have not moved since).
+    CachedContact cache = k < polygonCache_.size() ? polygonCache_[k] : CachedContact{};
+    const ContactGeometry g = pairGeometry(p, &cache);
+    ContactRecord c;
+    c.i = p.i;
+    c.j = p.j;
+    c.point = g.point;
+    c.normal = g.normal;
+    c.fn = p.fn;
+    c.ft = p.ft;
+    c.overlap = p.overlap;
+    out.push_back(c);
+  }
+}
+
+void ContactSolver::countContacts(std::vector<int>& count) const {
+  count.assign(static_cast<size_t>(particles_.size()), 0);
+  for (const PairState& p : neighbors_.pairs()) {
+    if (p.overlap <= 0) continue;
+    ++count[static_cast<size_t>(p.i)];
+    if (p.j >= 0) ++count[static_cast<size_t>(p.j)];
+  }
+}
+
+double ContactSolver::elasticEnergy() const {
+  double e = 0;
+  const LinearSpringDashpot normal{material_.normalStiffness};
+  const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
+  for (const PairState& p : neighbors_.pairs()) {
+    if (p.overlap <= 0) continue;
+    e += normal.energy(p.overlap) + tangential.energy(p.history);
+  }
+  return e;
+}
+
+void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalDt) const {
+  const std::vector<double>& radius = particles_.boundingRadius;
+  for (const PairState& p : neighbors_.pairs()) {
+    if (p.overlap <= 0) continue;
+    const double size = p.j >= 0 ? std::min(radius[p.i], radius[p.j]) : radius[p.i];
+    if (p.overlap > 0.5 * size) {
+      std::ostringstream os;
+      os << "runaway overlap " << (step == 0 ? std::string("at the start") : "at step " + std::to_string(step)) << ": ";
+      if (p.j >= 0) os << "particles " << p.i << " and " << p.j;
+      else os << "particle " << p.i << " and wall " << (-1 - p.j);
+      os << " overlap by " << 100 * p.overlap / size << "% of the smaller particle's radius";
+      if (step == 0) {
+        os << " at the start (more than 50% is refused: separate the particles in the scene)";
+      } else {
+        os << "; the contacts are too soft for the load or the timestep (" << dt << " s, critical " << criticalDt
+           << " s) is too large";
+      }
+      throw SimulationError(os.str());
+    }
+  }
+}
+
+void ContactSolver::persist(StateArchive& a) {
+  a.section("contacts");
+  neighbors_.persist(a, particles_.size(), static_cast<int>(particles_.walls.size()));
+  a.bitwise(polygonCache_);
+  if (a.loading()) {
+    // The polygon cache is read per pair, by index, and its features index a polygon's
+    // corners: a cache that cannot have come from this world is refused.
+    a.require(particles_.polygons.empty() || polygonCache_.size() == neighbors_.pairs().size(),
+              "the polygon contact cache's length differs from the pair count");
+    for (const CachedContact& c : polygonCache_) {
+      a.require(c.kind <= CachedContact::Kind::VertexDisc && c.reference >= 0 && c.reference < kMaxPolygonVertices &&
+                    c.incident >= 0 && c.incident < kMaxPolygonVertices,
+                "a polygon contact cache entry is out of range");
+    }
+    if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
+    if (pool_) assignDeferredSlots();  // the slots follow the pair list
+  }
+}
+
+}  // namespace grainlab

@@ -1,0 +1,96 @@
+#pragma once
+// The DEM's contacts: which pairs may touch (the Verlet neighbour list: the broad phase),
+// where they touch (discs in closed form, polygons through their kept features: the narrow
+// phase), the force law (linear spring-dashpot, Cundall-Strack friction) with each pair's
+// history, and the assembly of every pair's force onto its particles, threaded or not with
+// bit-identical results.
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "contact_geometry.hpp"
+#include "grainlab/contact.hpp"
+#include "grainlab/material.hpp"
+#include "grainlab/particle_store.hpp"
+#include "grainlab/profile.hpp"
+#include "neighbor_list.hpp"
+#include "polygon_collider.hpp"
+
+namespace grainlab {
+
+class StateArchive;
+class WorkerPool;
+
+class ContactSolver {
+ public:
+  /// `pool` (null when serial) runs the force loop; `profile` receives its timings.
+  ContactSolver(ParticleStore& particles, const Material& material, double skinFraction, WorkerPool* pool,
+                Profile& profile);
+  ~ContactSolver();
+
+  /// Takes in the store's particles and walls as they are now (polygon features, the skin);
+  /// the next computeForces() builds a new neighbour list.
+  void initialize();
+  /// True if some particle in [begin, end) has moved far enough that the neighbour list must
+  /// be rebuilt. Reads only that range, so each thread checks the particles it just moved.
+  bool movedOutOfSkin(int begin, int end) const;
+  /// Adds every touching pair's force and torques for a step of dt to the store's forces
+  /// (which hold the body forces), then Cundall's local damping. `moved`: movedOutOfSkin()
+  /// was true for some range since the last call.
+  void computeForces(double dt, bool moved);
+  /// Frictional springs built under another friction are stale: every pair's is dropped.
+  void clearTangentialHistory();
+
+  void contacts(std::vector<ContactRecord>& out) const;
+  /// Each particle's number of touching contacts, as of the last force computation.
+  void countContacts(std::vector<int>& count) const;
+  double elasticEnergy() const;
+  void checkOverlaps(std::int64_t step, double dt, double criticalDt) const;
+  void persist(StateArchive& a);
+
+ private:
+  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
+  void assignDamping();
+  void assignDeferredSlots();
+  void carryPolygonCache();
+  void applyLocalDamping(int k);
+  template <class Law, bool kDiscsOnly>
+  void pairForces(const Law& law, double dt);
+  template <bool kDiscsOnly, class Force, class Apart>
+  void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
+  template <class Law>
+  void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
+                    double& torqueI, double& torqueJ) const;
+  template <class Law>
+  void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
+                    double& torqueI, double& torqueJ) const;
+
+  ParticleStore& particles_;
+  const Material& material_;
+  const double skinFraction_;
+  WorkerPool* pool_;
+  Profile& profile_;
+  double skin_ = 0;  // m
+
+  NeighborList neighbors_;
+  std::unique_ptr<PolygonCollider> polygonCollider_;
+  std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
+  // Parallel force loop: a pair's share of force on a particle is added at once by the thread
+  // that owns the particle (the one computing its first pair); a share computed by another
+  // thread waits in a slot and is added after the loop, in pair order.
+  struct DeferredForce {
+    Vec2 force = Vec2::Zero();            // to add to the particle's force
+    double torque = 0;                    // to add to its torque
+    bool touching = false;                // false: the pair was apart, nothing to add
+  };
+  std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
+  std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
+  std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
+  // Scratch for the two-pass force loop: each pair's room for its contact (one of the two,
+  // by whether the scene has polygons).
+  std::vector<TouchingDiscs> touchingDiscs_;
+  std::vector<TouchingShapes> touchingShapes_;
+};
+
+}  // namespace grainlab

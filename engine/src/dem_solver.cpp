@@ -1,0 +1,67 @@
+#include "dem_solver.hpp"
+
+#include <chrono>
+
+#include "leapfrog.hpp"
+#include "timestep_bounds.hpp"
+#include "worker_pool.hpp"
+
+namespace grainlab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+std::unique_ptr<WorkerPool> makePool(int threads) {
+  return threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr;
+}
+
+}  // namespace
+
+DemSolver::DemSolver(ParticleStore& particles, const Material& material, int threads, double skinFraction,
+                     Profile& profile)
+    : particles_(particles),
+      material_(material),
+      profile_(profile),
+      pool_(makePool(threads)),
+      contacts_(particles, material, skinFraction, pool_.get(), profile) {}
+
+DemSolver::~DemSolver() = default;
+
+void DemSolver::forEachParticleRange(const std::function<void(int, int)>& body) {
+  if (pool_) pool_->parallelFor(particles_.size(), body);
+  else body(0, particles_.size());
+}
+
+void DemSolver::initialize(double dt) {
+  contacts_.initialize();
+  for (int k = 0; k < particles_.size(); ++k) {
+    particles_.force[k] = particles_.bodyForce(k);
+    particles_.torque[k] = 0;
+  }
+  contacts_.computeForces(dt, neighborsOutdated_.exchange(false, std::memory_order_relaxed));
+}
+
+// The step, as a pipeline: each particle is kicked and drifted by the forces of the last step
+// (and checked against the neighbour list's skin while it is in cache), then the contacts
+// (neighbour list, narrow phase, force law) give the forces for the next.
+void DemSolver::step(double dt, std::int64_t) {
+  auto t0 = Clock::now();
+  forEachParticleRange([&](int begin, int end) {
+    leapfrogAdvance(particles_, dt, begin, end);
+    if (contacts_.movedOutOfSkin(begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
+  });
+  auto t1 = Clock::now();
+  contacts_.computeForces(dt, neighborsOutdated_.exchange(false, std::memory_order_relaxed));
+  profile_.integrate += seconds(t0, t1);
+}
+
+double DemSolver::packingTimestep(int* particle, int* contacts) const {
+  std::vector<int> count;
+  contacts_.countContacts(count);
+  return grainlab::packingTimestep(particles_, material_, count, particle, contacts);
+}
+
+}  // namespace grainlab

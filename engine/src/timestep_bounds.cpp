@@ -1,0 +1,49 @@
+#include "timestep_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "contact_law.hpp"
+
+namespace grainlab {
+
+double stiffestSpring(const ParticleStore& particles, const Material& material, int k, bool tangential) {
+  const double r = particles.boundingRadius[k];
+  const double rotational = 1.0 + particles.mass[k] * r * r / particles.inertia[k];
+  const double normal = material.normalStiffness * (particles.shape[k] == ShapeKind::Disc ? 1.0 : rotational);
+  return tangential ? std::max(normal, material.tangentialStiffness * rotational) : normal;
+}
+
+double criticalTimestep(const ParticleStore& particles, const Material& material) {
+  double dt = std::numeric_limits<double>::infinity();
+  // The tangential spring counts whatever the friction now: the World caches this once for
+  // the run, and friction may change between stages.
+  for (int k = 0; k < particles.size(); ++k) {
+    dt = std::min(dt, 2.0 * std::sqrt(0.5 * particles.mass[k] / stiffestSpring(particles, material, k, true)));
+  }
+  return dt;
+}
+
+double packingTimestep(const ParticleStore& particles, const Material& material, std::span<const int> contactCount,
+                       int* particle, int* contacts) {
+  const double zeta = dampingRatio(material.restitution);
+  const double dampingFactor = std::sqrt(1 + zeta * zeta) - zeta;
+  double dt = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < particles.size(); ++k) {
+    const int count = contactCount[static_cast<size_t>(k)];
+    if (particles.motion[k] != Motion::Dynamic || count == 0) continue;
+    // The same spring as criticalTimestep(), once per contact; frictionless contacts (the
+    // friction as it is now) have no tangential spring.
+    const double stiffest = stiffestSpring(particles, material, k, material.friction > 0);
+    const double bound = dampingFactor * 2.0 * std::sqrt(0.5 * particles.mass[k] / (stiffest * count));
+    if (bound < dt) {
+      dt = bound;
+      if (particle) *particle = k;
+      if (contacts) *contacts = count;
+    }
+  }
+  return dt;
+}
+
+}  // namespace grainlab
