@@ -1,6 +1,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "grainlab/errors.hpp"
@@ -149,48 +150,46 @@ double cyclicPathEstimate(const StageSpec& s) {
 StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
   JsonReader r(j, path);
   StageSpec s;
-  const std::string type =
-      r.choice("type", "free", {"free", "compaction", "isotropic", "biaxial", "rotation", "cyclic", "simple_shear"});
+  std::set<std::string> typeNames;
+  for (StageSpec::Type t : stageTypes()) typeNames.emplace(toString(t));
+  const std::string type = r.choice("type", "free", typeNames);
+  s.type = *parseStageType(type);
   s.name = r.string("name", type);
-  if (type == "free") {
-    s.type = StageSpec::Type::Free;
-    if (!r.has("duration")) throw SceneError(r.fieldPath("duration"), "a free stage needs a duration in s");
-    s.duration = r.number("duration", 0, 0, kInf, true);
-  } else if (type == "compaction") {
-    // The paper's stage 0: frictionless, until the particles are close (void_ratio) with
-    // almost no force (pressure, the backstop).
-    s.type = StageSpec::Type::Compaction;
-    s.pressure = r.number("pressure", 5e3, 0, kInf, true);
-    s.strainRate = r.number("strain_rate", 2.0, 0, kInf, true);
-    s.friction = r.number("friction", 0.0, 0, kInf);
-    if (r.has("void_ratio")) s.voidRatio = r.number("void_ratio", 0, 0, 10, true);
-  } else if (type == "isotropic") {
-    s.type = StageSpec::Type::Isotropic;
-    s.pressure = r.number("pressure", 300e3, 0, kInf, true);
-    s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
-    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
-  } else if (type == "biaxial") {
-    s.type = StageSpec::Type::Biaxial;
-    s.pressure = r.number("pressure", 300e3, 0, kInf, true);
-    s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
-    s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
-    s.lateral = parseLateral(r);
-    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
-  } else if (type == "rotation") {
-    s.type = StageSpec::Type::Rotation;
-    parseRotation(r, s);
-    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
-  } else if (type == "cyclic") {
-    s.type = StageSpec::Type::Cyclic;
-    parseCyclic(r, s);
-    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
-  } else {
-    s.type = StageSpec::Type::SimpleShear;
-    if (!r.has("shear_rate")) throw SceneError(r.fieldPath("shear_rate"), "a simple_shear stage needs a shear_rate γ̇ in 1/s");
-    s.shearRate = r.number("shear_rate", 0, 0, kInf, true);
-    s.pressure = r.number("normal_stress", 300e3, 0, kInf, true);
-    s.targetShearStrain = r.number("target_shear_strain", 0.2, 0, 2, true);
-    if (r.has("friction")) s.friction = r.number("friction", 0, 0, kInf);
+  switch (s.type) {
+    case StageSpec::Type::Free:
+      if (!r.has("duration")) throw SceneError(r.fieldPath("duration"), "a free stage needs a duration in s");
+      s.duration = r.number("duration", 0, 0, kInf, true);
+      break;
+    case StageSpec::Type::Compaction:
+      // The paper's stage 0: frictionless, until the particles are close (void_ratio) with
+      // almost no force (pressure, the backstop).
+      s.pressure = r.number("pressure", 5e3, 0, kInf, true);
+      s.strainRate = r.number("strain_rate", 2.0, 0, kInf, true);
+      s.friction = r.number("friction", 0.0, 0, kInf);
+      if (r.has("void_ratio")) s.voidRatio = r.number("void_ratio", 0, 0, 10, true);
+      break;
+    case StageSpec::Type::Isotropic:
+      s.pressure = r.number("pressure", 300e3, 0, kInf, true);
+      s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
+      break;
+    case StageSpec::Type::Biaxial:
+      s.pressure = r.number("pressure", 300e3, 0, kInf, true);
+      s.strainRate = r.number("strain_rate", 0.5, 0, kInf, true);
+      s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
+      s.lateral = parseLateral(r);
+      break;
+    case StageSpec::Type::Rotation: parseRotation(r, s); break;
+    case StageSpec::Type::Cyclic: parseCyclic(r, s); break;
+    case StageSpec::Type::SimpleShear:
+      if (!r.has("shear_rate")) throw SceneError(r.fieldPath("shear_rate"), "a simple_shear stage needs a shear_rate γ̇ in 1/s");
+      s.shearRate = r.number("shear_rate", 0, 0, kInf, true);
+      s.pressure = r.number("normal_stress", 300e3, 0, kInf, true);
+      s.targetShearStrain = r.number("target_shear_strain", 0.2, 0, 2, true);
+      break;
+  }
+  // A stage's own friction (compaction has its default of 0 above).
+  if (s.type != StageSpec::Type::Free && s.type != StageSpec::Type::Compaction && r.has("friction")) {
+    s.friction = r.number("friction", 0, 0, kInf);
   }
   // Every loading stage has a time limit, so a criterion that is never met cannot run forever:
   // compaction and consolidation 1 s of simulated time (about ten times what the presets

@@ -1,6 +1,8 @@
 // Scene JSON: defaults, and errors that name the field and the reason.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
@@ -81,6 +83,27 @@ TEST(Scene, EveryPresetParses) {
   } catch (const SceneError& e) {
     EXPECT_EQ(e.field(), "preset");
   }
+}
+
+// The stage types' one table: each name parses back to its type, the scene parser reads the
+// presets' stages as the types their names give, and every type has a preset that uses it.
+TEST(Scene, StageTypeNamesRoundTripAndEveryTypeHasAPreset) {
+  std::set<StageSpec::Type> seen;
+  for (StageSpec::Type t : stageTypes()) EXPECT_EQ(parseStageType(toString(t)), t) << toString(t);
+  EXPECT_FALSE(parseStageType("biaxal").has_value());
+  for (const std::string& name : presetNames()) {
+    const json j = presetScene(name);
+    const Scene scene = parseScene(j);
+    ASSERT_EQ(scene.stages.size(), j["stages"].size()) << name;
+    for (size_t k = 0; k < scene.stages.size(); ++k) {
+      EXPECT_EQ(toString(scene.stages[k].type), j["stages"][k]["type"].get<std::string>()) << name;
+      seen.insert(scene.stages[k].type);
+    }
+  }
+  EXPECT_EQ(seen.size(), stageTypes().size());
+  json unknown = oneDisc();
+  unknown["stages"] = json::array({{{"type", "biaxal"}}});
+  EXPECT_EQ(fieldOf(unknown), "stages[0].type");
 }
 
 }  // namespace

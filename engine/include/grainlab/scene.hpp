@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -55,6 +57,14 @@ inline bool isShearing(StageSpec::Type t) {
   return t == StageSpec::Type::Biaxial || t == StageSpec::Type::Rotation || t == StageSpec::Type::Cyclic ||
          t == StageSpec::Type::SimpleShear;
 }
+
+/// A stage type's name in scene JSON ("free", "compaction", "isotropic", "biaxial",
+/// "rotation", "cyclic", "simple_shear"): one table for the parser, the studies and the docs.
+std::string_view toString(StageSpec::Type type);
+/// The stage type a name gives; nothing for any other string.
+std::optional<StageSpec::Type> parseStageType(std::string_view name);
+/// Every stage type, in the order of the enum.
+std::span<const StageSpec::Type> stageTypes();
 
 struct BoundarySpec {
   enum class Type { None, Membrane };

@@ -1,0 +1,43 @@
+#include <array>
+#include <utility>
+
+#include "grainlab/scene.hpp"
+
+namespace grainlab {
+namespace {
+
+using Type = StageSpec::Type;
+constexpr std::array<std::pair<Type, std::string_view>, 7> kNames{{
+    {Type::Free, "free"},
+    {Type::Compaction, "compaction"},
+    {Type::Isotropic, "isotropic"},
+    {Type::Biaxial, "biaxial"},
+    {Type::Rotation, "rotation"},
+    {Type::Cyclic, "cyclic"},
+    {Type::SimpleShear, "simple_shear"},
+}};
+constexpr std::array<Type, kNames.size()> kTypes = [] {
+  std::array<Type, kNames.size()> types{};
+  for (size_t k = 0; k < kNames.size(); ++k) types[k] = kNames[k].first;
+  return types;
+}();
+
+}  // namespace
+
+std::string_view toString(StageSpec::Type type) {
+  for (const auto& [t, name] : kNames) {
+    if (t == type) return name;
+  }
+  return "unknown";
+}
+
+std::optional<StageSpec::Type> parseStageType(std::string_view name) {
+  for (const auto& [t, n] : kNames) {
+    if (n == name) return t;
+  }
+  return std::nullopt;
+}
+
+std::span<const StageSpec::Type> stageTypes() { return kTypes; }
+
+}  // namespace grainlab
