@@ -15,8 +15,6 @@ namespace {
 
 const double kMissing = std::nan("");
 
-size_t column(const char* name) { return seriesColumnIndex(name); }
-
 // The major (most compressive) principal direction of the strain rate measured from the
 // ring's motion, in θσ's convention (docs/micromechanics.md): D = −sym(L), compression
 // positive, θ = ½ arg((D11 − D22) + 2i D12). NaN where D has no deviatoric part to speak of
@@ -59,24 +57,26 @@ void Sampler::resetStrainReference() {
 }
 
 Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRate) {
-  static const size_t cStep = column("step"), cTime = column("time"), cStage = column("stage"),
-                      cAxial = column("axial_strain"), cLateral = column("lateral_strain"),
-                      cVol = column("volumetric_strain"), c11 = column("sigma11"), c22 = column("sigma22"),
-                      c12 = column("sigma12"), c21 = column("sigma21"), cP = column("p"), cQ = column("q"),
-                      cPhi = column("phi_mob_deg"), cVoid = column("void_ratio"),
-                      cCoord = column("coordination"), cContacts = column("contacts"),
-                      cAc = column("a_c"), cThc = column("theta_c_deg"), cAn = column("a_n"),
-                      cThn = column("theta_n_deg"), cAt = column("a_t"), cTht = column("theta_t_deg"),
-                      cAw = column("a_w"), cAln = column("a_ln"), cThln = column("theta_ln_deg"),
-                      cAlt = column("a_lt"), cThlt = column("theta_lt_deg"),
-                      cTsMacro = column("theta_sigma_macro_deg"), cTsMicro = column("theta_sigma_micro_deg"),
-                      cTs10 = column("theta_sigma_eq10_deg"), cTs11 = column("theta_sigma_eq11_deg"),
-                      cOmMacro = column("omega_macro_deg"), cOmMicro = column("omega_micro_deg"),
-                      cKin = column("kinetic_energy"), cOm10 = column("omega_eq10_deg"),
-                      cOm11 = column("omega_eq11_deg"), cF0 = column("f0"), cL0 = column("l0"),
-                      cInertial = column("inertial_number"), cElastic = column("elastic_energy"),
-                      cArea = column("area"), cThEps = column("theta_strain_rate_deg"),
-                      cOmEps = column("omega_strain_rate_deg");
+  using Id = SeriesColumnId;
+  constexpr auto at = columnIndex;
+  constexpr size_t cStep = at(Id::Step), cTime = at(Id::Time), cStage = at(Id::Stage),
+                   cAxial = at(Id::AxialStrain), cLateral = at(Id::LateralStrain),
+                   cVol = at(Id::VolumetricStrain), c11 = at(Id::Sigma11), c22 = at(Id::Sigma22),
+                   c12 = at(Id::Sigma12), c21 = at(Id::Sigma21), cP = at(Id::P), cQ = at(Id::Q),
+                   cPhi = at(Id::PhiMobDeg), cVoid = at(Id::VoidRatio),
+                   cCoord = at(Id::Coordination), cContacts = at(Id::Contacts),
+                   cAc = at(Id::AC), cThc = at(Id::ThetaCDeg), cAn = at(Id::AN),
+                   cThn = at(Id::ThetaNDeg), cAt = at(Id::AT), cTht = at(Id::ThetaTDeg),
+                   cAw = at(Id::AW), cAln = at(Id::ALn), cThln = at(Id::ThetaLnDeg),
+                   cAlt = at(Id::ALt), cThlt = at(Id::ThetaLtDeg),
+                   cTsMacro = at(Id::ThetaSigmaMacroDeg), cTsMicro = at(Id::ThetaSigmaMicroDeg),
+                   cTs10 = at(Id::ThetaSigmaEq10Deg), cTs11 = at(Id::ThetaSigmaEq11Deg),
+                   cOmMacro = at(Id::OmegaMacroDeg), cOmMicro = at(Id::OmegaMicroDeg),
+                   cKin = at(Id::KineticEnergy), cOm10 = at(Id::OmegaEq10Deg),
+                   cOm11 = at(Id::OmegaEq11Deg), cF0 = at(Id::F0), cL0 = at(Id::L0),
+                   cInertial = at(Id::InertialNumber), cElastic = at(Id::ElasticEnergy),
+                   cArea = at(Id::Area), cThEps = at(Id::ThetaStrainRateDeg),
+                   cOmEps = at(Id::OmegaStrainRateDeg);
   Sample s;
   s.step = world_.stepCount();
   s.time = world_.time();

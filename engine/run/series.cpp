@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -5,59 +6,88 @@
 
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
+#include "grainlab/series_column.hpp"
 
 namespace grainlab {
+namespace {
+
+struct Definition {
+  SeriesColumnId id;
+  std::string_view name, unit, meaning;
+};
+// contracts.md's columns first, in its order; grainlab's extensions after them. Angles follow
+// docs/micromechanics.md; stresses and strains are compression positive.
+constexpr std::array<Definition, kSeriesColumnCount> kDefinitions{{
+    {SeriesColumnId::Step, "step", "", "timestep count since the run began"},
+    {SeriesColumnId::Time, "time", "s", "simulated time since the run began"},
+    {SeriesColumnId::Stage, "stage", "", "the stage's name"},
+    {SeriesColumnId::AxialStrain, "axial_strain", "",
+     "ε22 = 1 − stretch along axis 2 since the stage began (consolidation and loading stages)"},
+    {SeriesColumnId::LateralStrain, "lateral_strain", "", "ε11 = 1 − stretch along axis 1, from the same start"},
+    {SeriesColumnId::VolumetricStrain, "volumetric_strain", "",
+     "1 − A/A0 of the area inside the ring, from the same start"},
+    {SeriesColumnId::Sigma11, "sigma11", "Pa", "σ11 of the contact stress over the area inside the ring"},
+    {SeriesColumnId::Sigma22, "sigma22", "Pa", "σ22 of the contact stress"},
+    {SeriesColumnId::Sigma12, "sigma12", "Pa", "σ12 of the contact stress"},
+    {SeriesColumnId::Sigma21, "sigma21", "Pa", "σ21 of the contact stress"},
+    {SeriesColumnId::P, "p", "Pa", "mean stress (σ11 + σ22)/2"},
+    {SeriesColumnId::Q, "q", "Pa", "radius of Mohr's circle √(((σ11 − σ22)/2)² + ((σ12 + σ21)/2)²) = (σ1 − σ3)/2"},
+    {SeriesColumnId::PhiMobDeg, "phi_mob_deg", "°", "mobilised friction angle asin(q/p)"},
+    {SeriesColumnId::VoidRatio, "void_ratio", "", "(area inside the ring − solid area)/solid area"},
+    {SeriesColumnId::Coordination, "coordination", "", "contact ends on specimen particles per specimen particle"},
+    {SeriesColumnId::Contacts, "contacts", "", "contacts touching a specimen particle"},
+    {SeriesColumnId::AC, "a_c", "", "anisotropy of the contact normals"},
+    {SeriesColumnId::ThetaCDeg, "theta_c_deg", "°", "direction of the contact normals' anisotropy"},
+    {SeriesColumnId::AN, "a_n", "", "anisotropy of the normal contact forces"},
+    {SeriesColumnId::ThetaNDeg, "theta_n_deg", "°", "direction of the normal forces' anisotropy"},
+    {SeriesColumnId::AT, "a_t", "", "anisotropy of the tangential contact forces"},
+    {SeriesColumnId::ThetaTDeg, "theta_t_deg", "°", "direction of the tangential forces' anisotropy"},
+    {SeriesColumnId::AW, "a_w", "", "rotation term from moment equilibrium"},
+    {SeriesColumnId::ALn, "a_ln", "", "anisotropy of the normal part of the contact vectors"},
+    {SeriesColumnId::ThetaLnDeg, "theta_ln_deg", "°", "its direction"},
+    {SeriesColumnId::ALt, "a_lt", "", "anisotropy of the tangential part of the contact vectors"},
+    {SeriesColumnId::ThetaLtDeg, "theta_lt_deg", "°", "its direction"},
+    {SeriesColumnId::ThetaSigmaMacroDeg, "theta_sigma_macro_deg", "°",
+     "major principal stress direction from the stress tensor"},
+    {SeriesColumnId::ThetaSigmaMicroDeg, "theta_sigma_micro_deg", "°",
+     "the same from the fabric coefficients, Eq. (7)"},
+    {SeriesColumnId::ThetaSigmaEq10Deg, "theta_sigma_eq10_deg", "°",
+     "the same by Eq. (10): the mean of θ_c, θ_n, θ_t"},
+    {SeriesColumnId::ThetaSigmaEq11Deg, "theta_sigma_eq11_deg", "°",
+     "the same by Eq. (11): Eq. (7) without the contact-vector terms"},
+    {SeriesColumnId::OmegaMacroDeg, "omega_macro_deg", "°",
+     "non-coaxiality ω = θσ(macro) − 90°, wrapped to [−90°, 90°)"},
+    {SeriesColumnId::OmegaMicroDeg, "omega_micro_deg", "°", "ω from θσ(micro)"},
+    {SeriesColumnId::KineticEnergy, "kinetic_energy", "J/m", "Σ ½ m v² + ½ I ω² over the dynamic particles"},
+    {SeriesColumnId::OmegaEq10Deg, "omega_eq10_deg", "°", "ω from θσ by Eq. (10)"},
+    {SeriesColumnId::OmegaEq11Deg, "omega_eq11_deg", "°", "ω from θσ by Eq. (11)"},
+    {SeriesColumnId::F0, "f0", "N", "mean normal contact force (the fabric fit's isotropic part)"},
+    {SeriesColumnId::L0, "l0", "m", "mean normal contact-vector length (the fabric fit's isotropic part)"},
+    {SeriesColumnId::InertialNumber, "inertial_number", "", "I = |ε̇| d √(ρ/p); quasi-static below about 1e-3"},
+    {SeriesColumnId::ElasticEnergy, "elastic_energy", "J/m", "energy stored in the contact springs"},
+    {SeriesColumnId::Area, "area", "m²", "area inside the ring's inner envelope"},
+    {SeriesColumnId::ThetaStrainRateDeg, "theta_strain_rate_deg", "°",
+     "direction of the major (most compressive) principal strain rate, fitted to the ring's motion"},
+    {SeriesColumnId::OmegaStrainRateDeg, "omega_strain_rate_deg", "°",
+     "θσ(macro) − θ_strain_rate, wrapped to [−90°, 90°)"},
+}};
+// The ids are the table's positions.
+constexpr bool idsInOrder() {
+  for (std::size_t k = 0; k < kDefinitions.size(); ++k) {
+    if (columnIndex(kDefinitions[k].id) != k) return false;
+  }
+  return true;
+}
+static_assert(idsInOrder(), "kDefinitions must list the columns in SeriesColumnId order");
+
+}  // namespace
 
 const std::vector<SeriesColumn>& seriesColumnTable() {
-  // contracts.md's columns first, in its order; grainlab's extensions after them. Angles
-  // follow docs/micromechanics.md; stresses and strains are compression positive.
-  static const std::vector<SeriesColumn> table{
-      {"step", "", "timestep count since the run began"},
-      {"time", "s", "simulated time since the run began"},
-      {"stage", "", "the stage's name"},
-      {"axial_strain", "",
-       "ε22 = 1 − stretch along axis 2 since the stage began (consolidation and loading stages)"},
-      {"lateral_strain", "", "ε11 = 1 − stretch along axis 1, from the same start"},
-      {"volumetric_strain", "", "1 − A/A0 of the area inside the ring, from the same start"},
-      {"sigma11", "Pa", "σ11 of the contact stress over the area inside the ring"},
-      {"sigma22", "Pa", "σ22 of the contact stress"},
-      {"sigma12", "Pa", "σ12 of the contact stress"},
-      {"sigma21", "Pa", "σ21 of the contact stress"},
-      {"p", "Pa", "mean stress (σ11 + σ22)/2"},
-      {"q", "Pa", "radius of Mohr's circle √(((σ11 − σ22)/2)² + ((σ12 + σ21)/2)²) = (σ1 − σ3)/2"},
-      {"phi_mob_deg", "°", "mobilised friction angle asin(q/p)"},
-      {"void_ratio", "", "(area inside the ring − solid area)/solid area"},
-      {"coordination", "", "contact ends on specimen particles per specimen particle"},
-      {"contacts", "", "contacts touching a specimen particle"},
-      {"a_c", "", "anisotropy of the contact normals"},
-      {"theta_c_deg", "°", "direction of the contact normals' anisotropy"},
-      {"a_n", "", "anisotropy of the normal contact forces"},
-      {"theta_n_deg", "°", "direction of the normal forces' anisotropy"},
-      {"a_t", "", "anisotropy of the tangential contact forces"},
-      {"theta_t_deg", "°", "direction of the tangential forces' anisotropy"},
-      {"a_w", "", "rotation term from moment equilibrium"},
-      {"a_ln", "", "anisotropy of the normal part of the contact vectors"},
-      {"theta_ln_deg", "°", "its direction"},
-      {"a_lt", "", "anisotropy of the tangential part of the contact vectors"},
-      {"theta_lt_deg", "°", "its direction"},
-      {"theta_sigma_macro_deg", "°", "major principal stress direction from the stress tensor"},
-      {"theta_sigma_micro_deg", "°", "the same from the fabric coefficients, Eq. (7)"},
-      {"theta_sigma_eq10_deg", "°", "the same by Eq. (10): the mean of θ_c, θ_n, θ_t"},
-      {"theta_sigma_eq11_deg", "°", "the same by Eq. (11): Eq. (7) without the contact-vector terms"},
-      {"omega_macro_deg", "°", "non-coaxiality ω = θσ(macro) − 90°, wrapped to [−90°, 90°)"},
-      {"omega_micro_deg", "°", "ω from θσ(micro)"},
-      {"kinetic_energy", "J/m", "Σ ½ m v² + ½ I ω² over the dynamic particles"},
-      {"omega_eq10_deg", "°", "ω from θσ by Eq. (10)"},
-      {"omega_eq11_deg", "°", "ω from θσ by Eq. (11)"},
-      {"f0", "N", "mean normal contact force (the fabric fit's isotropic part)"},
-      {"l0", "m", "mean normal contact-vector length (the fabric fit's isotropic part)"},
-      {"inertial_number", "", "I = |ε̇| d √(ρ/p); quasi-static below about 1e-3"},
-      {"elastic_energy", "J/m", "energy stored in the contact springs"},
-      {"area", "m²", "area inside the ring's inner envelope"},
-      {"theta_strain_rate_deg", "°",
-       "direction of the major (most compressive) principal strain rate, fitted to the ring's motion"},
-      {"omega_strain_rate_deg", "°", "θσ(macro) − θ_strain_rate, wrapped to [−90°, 90°)"},
-  };
+  static const std::vector<SeriesColumn> table = [] {
+    std::vector<SeriesColumn> columns;
+    for (const Definition& d : kDefinitions) columns.push_back({std::string(d.name), std::string(d.unit), std::string(d.meaning)});
+    return columns;
+  }();
   return table;
 }
 

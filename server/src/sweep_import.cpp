@@ -57,8 +57,8 @@ std::vector<SampleRecord> readSeries(const fs::path& file) {
         s.values[static_cast<size_t>(slot[c])] = std::strtod(cells[c].c_str(), nullptr);
       }
     }
-    s.step = static_cast<std::int64_t>(s.values[seriesColumnIndex("step")]);
-    s.time = s.values[seriesColumnIndex("time")];
+    s.step = static_cast<std::int64_t>(s.values[columnIndex(SeriesColumnId::Step)]);
+    s.time = s.values[columnIndex(SeriesColumnId::Time)];
     samples.push_back(std::move(s));
   }
   return samples;

@@ -10,24 +10,12 @@
 #include "grainlab/run_cost.hpp"
 #include "grainlab/run_status.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/series_column.hpp"
 
 namespace grainlab {
 
 class World;
 namespace analysis { struct PolarHistograms; }
-
-/// A column of series.csv: its name, unit ("" for a pure number or a name) and meaning. The
-/// table is the one definition of the columns: the CSV header, the API's column list,
-/// `grainlab columns` and docs/series-columns.md come from it, and the dashboard's charts are
-/// checked against it.
-struct SeriesColumn {
-  std::string name, unit, meaning;
-};
-const std::vector<SeriesColumn>& seriesColumnTable();
-/// The columns' names, in order (contracts.md's, then grainlab's extensions).
-const std::vector<std::string>& seriesColumns();
-/// The position of a column in seriesColumns(); throws std::logic_error for an unknown name.
-std::size_t seriesColumnIndex(std::string_view name);
 
 struct Sample {
   std::int64_t step = 0;
