@@ -16,8 +16,8 @@
 
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
-#include "grainlab/report/csv_table.hpp"
-#include "grainlab/report/parallel_runs.hpp"
+#include "grainlab/studies/paper/csv_table.hpp"
+#include "grainlab/studies/paper/parallel_runs.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/thread_cpu_clock.hpp"

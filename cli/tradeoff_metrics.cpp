@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-#include "grainlab/report/series_stats.hpp"
+#include "grainlab/studies/paper/series_stats.hpp"
 
 namespace grainlab::tradeoff {
 namespace {

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "grainlab/report/markup.hpp"
-#include "grainlab/report/svg_chart.hpp"
+#include "grainlab/studies/draw/markup.hpp"
+#include "grainlab/studies/paper/number_text.hpp"
+#include "grainlab/studies/draw/svg_chart.hpp"
 
 namespace grainlab::tradeoff {
 namespace {
