@@ -18,6 +18,7 @@
 #include "grainlab/presets.hpp"
 #include "grainlab/studies/paper/csv_table.hpp"
 #include "grainlab/studies/paper/parallel_runs.hpp"
+#include "grainlab/studies/paper/shearing_recorder.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
@@ -30,46 +31,6 @@ namespace {
 
 using tradeoff::Setting;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Keeps the shearing stage's samples of one run, nothing else.
-class ShearingRecorder : public RunObserver {
- public:
-  void onStart(const Scene& scene, const World&) override {
-    for (const StageSpec& s : scene.stages) {
-      if (s.type == StageSpec::Type::Biaxial) {
-        stage_ = s.name;
-        break;
-      }
-    }
-    const auto& columns = seriesColumns();
-    auto index = [&](const char* name) {
-      return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
-    };
-    strain_ = index("axial_strain");
-    phi_ = index("phi_mob_deg");
-    omega_ = index("omega_macro_deg");
-    macro_ = index("theta_sigma_macro_deg");
-    micro_ = index("theta_sigma_micro_deg");
-    inertial_ = index("inertial_number");
-    kinetic_ = index("kinetic_energy");
-  }
-  void onSample(const Sample& s, const World&) override {
-    if (s.stage != stage_) return;
-    auto at = [&](size_t k) { return k < s.values.size() ? s.values[k] : kNaN; };
-    samples.axialStrain.push_back(at(strain_));
-    samples.phiMobDeg.push_back(at(phi_));
-    samples.omegaMacroDeg.push_back(at(omega_));
-    samples.thetaSigmaMacroDeg.push_back(at(macro_));
-    samples.thetaSigmaMicroDeg.push_back(at(micro_));
-    samples.inertialNumber.push_back(at(inertial_));
-    samples.kineticEnergy.push_back(at(kinetic_));
-  }
-  tradeoff::ShearingSamples samples;
-
- private:
-  std::string stage_;
-  size_t strain_ = 0, phi_ = 0, omega_ = 0, macro_ = 0, micro_ = 0, inertial_ = 0, kinetic_ = 0;
-};
 
 struct Outcome {
   RunSummary summary;
@@ -106,7 +67,8 @@ std::vector<Outcome> runAll(const std::vector<nlohmann::json>& scenes, const std
   auto worker = [&] {
     for (size_t k = next++; k < scenes.size(); k = next++) {
       Outcome& o = outcomes[k];
-      ShearingRecorder recorder;
+      report::AssemblyResult shearing;
+      report::ShearingRecorder recorder(shearing);
       try {
         const Scene scene = parseScene(scenes[k]);
         for (const StageSpec& s : scene.stages) {
@@ -119,7 +81,7 @@ std::vector<Outcome> runAll(const std::vector<nlohmann::json>& scenes, const std
         o.summary.status = RunStatus::Failed;
         o.summary.error = e.what();
       }
-      o.metrics = tradeoff::measureRun(recorder.samples, o.summary.peakPhiMobDeg, o.summary.voidRatioAfterConsolidation);
+      o.metrics = tradeoff::measureRun(shearing.shearing, o.summary.peakPhiMobDeg, o.summary.voidRatioAfterConsolidation);
       const std::lock_guard lock(progress);
       std::cerr << "tradeoff: [" << ++done << "/" << scenes.size() << "] " << names[k] << ": " << o.summary.status
                 << " in " << std::setprecision(3) << o.summary.wallSeconds << " s"

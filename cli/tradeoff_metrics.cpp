@@ -37,25 +37,27 @@ double interpolateAt(const std::vector<double>& x, const std::vector<double>& y,
 
 double wrapOmegaDeg(double deg) { return wrapAround(deg, 0.0, 180.0); }
 
-RunMetrics measureRun(const ShearingSamples& s, double peakPhiMobDeg, double voidRatio) {
+RunMetrics measureRun(const report::ShearingSeries& shearing, double peakPhiMobDeg, double voidRatio) {
   RunMetrics m;
   m.peakPhiMobDeg = peakPhiMobDeg;
   m.voidRatio = voidRatio;
-  m.phiMobAtEndDeg = interpolateAt(s.axialStrain, s.phiMobDeg, kPhiStrain);
+  const std::vector<double> strain = shearing.column("axial_strain");
+  m.phiMobAtEndDeg = interpolateAt(strain, shearing.column("phi_mob_deg"), kPhiStrain);
+  const std::vector<double> omega = shearing.column("omega_macro_deg");
   for (double e : kOmegaStrains) {
-    const double w = interpolateAt(s.axialStrain, s.omegaMacroDeg, e, 180.0);
+    const double w = interpolateAt(strain, omega, e, 180.0);
     m.omegaDeg.push_back(std::isfinite(w) ? wrapOmegaDeg(w) : w);
   }
-  // The gap once shearing has begun: at zero strain the stress is isotropic and θσ has no
-  // meaning.
+  // The gap once shearing has begun: at zero strain (the state the stage starts from) the
+  // stress is isotropic and θσ has no meaning; inertia and heating are the shearing's too.
   std::vector<double> gaps, inertial, kinetic;
-  for (size_t k = 0; k < s.axialStrain.size(); ++k) {
-    if (!(s.axialStrain[k] > 0)) continue;
-    const double a = k < s.thetaSigmaMicroDeg.size() ? s.thetaSigmaMicroDeg[k] : kNaN;
-    const double b = k < s.thetaSigmaMacroDeg.size() ? s.thetaSigmaMacroDeg[k] : kNaN;
+  for (size_t k = 0; k < strain.size(); ++k) {
+    if (!(strain[k] > 0)) continue;
+    const double a = shearing.at("theta_sigma_micro_deg", k);
+    const double b = shearing.at("theta_sigma_macro_deg", k);
     if (std::isfinite(a) && std::isfinite(b)) gaps.push_back(report::axialDistanceDeg(a, b));
-    if (k < s.inertialNumber.size()) inertial.push_back(s.inertialNumber[k]);
-    if (k < s.kineticEnergy.size()) kinetic.push_back(s.kineticEnergy[k]);
+    inertial.push_back(shearing.at("inertial_number", k));
+    kinetic.push_back(shearing.at("kinetic_energy", k));
   }
   m.thetaSigmaGapDeg = report::finiteMedian(gaps);
   m.inertialNumber = report::finiteMedian(inertial);

@@ -5,23 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/studies/paper/shearing_series.hpp"
+
 namespace grainlab::tradeoff {
 
 /// The axial strains (compression positive, dimensionless) at which ω_macro is compared.
 inline const std::vector<double> kOmegaStrains{0.02, 0.05, 0.10, 0.20};
 /// The axial strain at which φ_mob is compared (the end of the presets' shearing).
 inline constexpr double kPhiStrain = 0.20;
-
-/// One run's shearing stage, one entry per sample, in sample order (units as series.csv).
-struct ShearingSamples {
-  std::vector<double> axialStrain;
-  std::vector<double> phiMobDeg;
-  std::vector<double> omegaMacroDeg;        ///< in [−90°, 90°)
-  std::vector<double> thetaSigmaMacroDeg;   ///< θσ from the stress tensor, [0°, 180°)
-  std::vector<double> thetaSigmaMicroDeg;   ///< θσ from Eq. 7, [0°, 180°)
-  std::vector<double> inertialNumber;
-  std::vector<double> kineticEnergy;        ///< J/m
-};
 
 /// What a run is judged on; NaN where it could not be measured.
 struct RunMetrics {
@@ -44,8 +35,9 @@ double interpolateAt(const std::vector<double>& x, const std::vector<double>& y,
 /// ω wrapped into [−90°, 90°).
 double wrapOmegaDeg(double deg);
 
-/// The metrics of one run from its shearing samples and its summary's values.
-RunMetrics measureRun(const ShearingSamples& s, double peakPhiMobDeg, double voidRatio);
+/// The metrics of one run from its shearing stage (as ShearingRecorder keeps it) and its
+/// summary's values.
+RunMetrics measureRun(const report::ShearingSeries& shearing, double peakPhiMobDeg, double voidRatio);
 
 /// |run − reference| per metric, in the order of errorNames(); ω by the axial distance.
 std::vector<double> metricErrors(const RunMetrics& run, const RunMetrics& reference);

@@ -10,16 +10,16 @@
 namespace grainlab::report {
 
 AssemblyRecorder::AssemblyRecorder(AssemblyResult result, std::string runDir)
-    : result_(std::move(result)), runDir_(runDir), writer_(std::move(runDir), nullptr), collector_(result_, -1) {}
+    : result_(std::move(result)), runDir_(runDir), writer_(std::move(runDir), nullptr), shearing_(result_) {}
 
 void AssemblyRecorder::onStart(const Scene& scene, const World& world) {
   writer_.onStart(scene, world);
-  collector_ = ShearingCollector(result_, biaxialStageIndex(scene));
+  shearing_.onStart(scene, world);
 }
 
 void AssemblyRecorder::onSample(const Sample& sample, const World& world) {
   writer_.onSample(sample, world);
-  collector_.add(sample.step, sample.values, sample.histograms);
+  shearing_.onSample(sample, world);
 }
 
 void AssemblyRecorder::onFinish(const RunSummary& summary, const World& world) {

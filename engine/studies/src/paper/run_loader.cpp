@@ -20,13 +20,6 @@ namespace fs = std::filesystem;
 
 }  // namespace
 
-int biaxialStageIndex(const Scene& scene) {
-  for (size_t s = 0; s < scene.stages.size(); ++s) {
-    if (scene.stages[s].type == StageSpec::Type::Biaxial) return static_cast<int>(s);
-  }
-  return -1;
-}
-
 nlohmann::json rosesToJson(const std::vector<RoseSnapshot>& roses) {
   nlohmann::json list = nlohmann::json::array();
   for (const RoseSnapshot& r : roses) {

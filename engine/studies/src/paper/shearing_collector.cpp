@@ -8,6 +8,13 @@
 
 namespace grainlab::report {
 
+int biaxialStageIndex(const Scene& scene) {
+  for (size_t s = 0; s < scene.stages.size(); ++s) {
+    if (scene.stages[s].type == StageSpec::Type::Biaxial) return static_cast<int>(s);
+  }
+  return -1;
+}
+
 ShearingCollector::ShearingCollector(AssemblyResult& result, int shearingStage)
     : result_(&result), shearingStage_(shearingStage) {}
 

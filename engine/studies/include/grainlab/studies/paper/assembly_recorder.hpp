@@ -6,7 +6,7 @@
 
 #include "grainlab/output_writer.hpp"
 #include "grainlab/studies/paper/assembly_result.hpp"
-#include "grainlab/studies/paper/shearing_collector.hpp"
+#include "grainlab/studies/paper/shearing_recorder.hpp"
 
 namespace grainlab::report {
 
@@ -14,7 +14,7 @@ class AssemblyRecorder : public RunObserver {
  public:
   /// Fills its own copy of `result` (see result()) and writes the run's files into `runDir`.
   AssemblyRecorder(AssemblyResult result, std::string runDir);
-  AssemblyRecorder(const AssemblyRecorder&) = delete;  // the collector refers to result_
+  AssemblyRecorder(const AssemblyRecorder&) = delete;  // shearing_ refers to result_
   AssemblyRecorder& operator=(const AssemblyRecorder&) = delete;
   const AssemblyResult& result() const { return result_; }
   void onStart(const Scene&, const World&) override;
@@ -25,7 +25,7 @@ class AssemblyRecorder : public RunObserver {
   AssemblyResult result_;
   std::string runDir_;
   OutputWriter writer_;
-  ShearingCollector collector_;
+  ShearingRecorder shearing_;
 };
 
 /// The name of the file in a run's directory that keeps its rose snapshots.

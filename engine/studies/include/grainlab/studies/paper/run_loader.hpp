@@ -11,9 +11,6 @@
 
 namespace grainlab::report {
 
-/// The index of the scene's first biaxial stage, −1 if it has none.
-int biaxialStageIndex(const Scene& scene);
-
 /// {"roses": [{"target_strain", "axial_strain", "histograms": PolarHistograms JSON or null}]}.
 nlohmann::json rosesToJson(const std::vector<RoseSnapshot>& roses);
 /// Fills the snapshots whose target strain matches one in `json` (the others stay empty).

@@ -1,15 +1,19 @@
 #pragma once
 // Picks the shearing stage out of a run's samples as they come: the rows of the biaxial stage,
 // preceded by the state it starts from (ε22 = 0), and the histograms nearest to the rose
-// diagrams' strains. Used while a run goes (AssemblyRecorder) and when reading one back.
+// diagrams' strains. Used while a run goes (ShearingRecorder) and when reading one back.
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "grainlab/analysis/histogram.hpp"
+#include "grainlab/scene.hpp"
 #include "grainlab/studies/paper/assembly_result.hpp"
 
 namespace grainlab::report {
+
+/// The index of the scene's first biaxial stage, −1 if it has none.
+int biaxialStageIndex(const Scene& scene);
 
 class ShearingCollector {
  public:
