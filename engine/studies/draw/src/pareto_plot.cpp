@@ -1,4 +1,4 @@
-#include "tradeoff_plot.hpp"
+#include "grainlab/studies/draw/pareto_plot.hpp"
 
 #include <algorithm>
 #include <cmath>

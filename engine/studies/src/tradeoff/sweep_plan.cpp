@@ -1,4 +1,4 @@
-#include "tradeoff_sweep.hpp"
+#include "grainlab/studies/tradeoff/sweep_plan.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -20,13 +20,6 @@ std::string text(double v) {
   return buffer;
 }
 
-// The preset's polygon vertex count; 0 for discs.
-int presetVertices(const std::string& preset) {
-  const json scene = presetScene(preset);
-  if (!scene.contains("assembly") || scene["assembly"].value("shape", "disc") == "disc") return 0;
-  return scene["assembly"].value("vertices", 6);
-}
-
 json& biaxialStage(json& scene) {
   for (json& stage : scene["stages"]) {
     if (stage.value("type", "") == "biaxial") return stage;
@@ -35,6 +28,12 @@ json& biaxialStage(json& scene) {
 }
 
 }  // namespace
+
+int presetVertices(const std::string& preset) {
+  const json scene = presetScene(preset);
+  if (!scene.contains("assembly") || scene["assembly"].value("shape", "disc") == "disc") return 0;
+  return scene["assembly"].value("vertices", 6);
+}
 
 bool Setting::sameRun(const Setting& o) const {
   return preset == o.preset && timestepSafety == o.timestepSafety && inertialNumber == o.inertialNumber &&

@@ -1,4 +1,4 @@
-#include "tradeoff_metrics.hpp"
+#include "grainlab/studies/tradeoff/metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

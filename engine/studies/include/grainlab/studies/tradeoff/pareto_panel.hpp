@@ -1,6 +1,6 @@
 #pragma once
-// The Pareto plot of `grainlab tradeoff`: error against cost, one panel per preset, as a
-// standalone SVG written by hand (log-scaled time, linear error, the front as a staircase).
+// What the trade-off's Pareto plot shows of one preset: each run's cost and error, its
+// sweep axis, and whether it is on the front (drawn by grainlab/studies/draw/pareto_plot.hpp).
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,9 +21,5 @@ struct ParetoPanel {
   /// The error a trivial perturbation alone produces (drawn as a dashed line); NaN for none.
   double noiseFloor = std::numeric_limits<double>::quiet_NaN();
 };
-
-/// The panels side by side in one <svg> document.
-std::string renderParetoSvg(const std::vector<ParetoPanel>& panels, const std::string& xLabel,
-                            const std::string& yLabel);
 
 }  // namespace grainlab::tradeoff

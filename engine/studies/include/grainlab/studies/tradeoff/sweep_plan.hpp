@@ -61,6 +61,9 @@ nlohmann::json settingScene(const Setting& setting);
 /// of its generated specimen, ρ its density and p the stage's confining pressure. 1/s.
 double strainRateFor(const nlohmann::json& scene, double inertialNumber);
 
+/// The preset's polygon vertex count; 0 for discs.
+int presetVertices(const std::string& preset);
+
 /// Why the scene parser refuses solver.engine "box2d" for `preset`; nullopt if it accepts it.
 std::optional<std::string> box2dRefusal(const std::string& preset);
 
