@@ -2,7 +2,8 @@
 
 #include <iostream>
 
-#include "grainlab/report/paper_report.hpp"
+#include "grainlab/studies/draw/paper_report.hpp"
+#include "grainlab/studies/paper/paper_study.hpp"
 #include "grainlab/studies/cluster.hpp"
 
 namespace grainlab {
@@ -46,9 +47,11 @@ int paperCommand(const std::vector<std::string>& args) {
     if (cluster.isRoot()) std::cerr << "grainlab paper: --report-only runs nothing: run it without mpirun\n";
     return 2;
   }
-  const report::PaperOutcome outcome = report::runPaper(options, cluster.isRoot() ? &std::cerr : nullptr);
+  const report::PaperStudy study = report::runPaperStudy(options, cluster.isRoot() ? &std::cerr : nullptr);
+  if (!cluster.isRoot()) return 0;  // rank 0 writes the report
+  report::writePaperReport(options, study, &std::cerr);
   int failed = 0;
-  for (const report::AssemblyResult& a : outcome.runs) {
+  for (const report::AssemblyResult& a : study.runs) {
     if (a.summary.status == RunStatus::Completed) continue;
     ++failed;
     std::cerr << "error: " << a.preset << " seed " << a.seed << " " << a.summary.status

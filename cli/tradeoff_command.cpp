@@ -1,92 +1,16 @@
 #include "tradeoff_command.hpp"
 
-#include <time.h>
-
-#include <algorithm>
-#include <atomic>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <limits>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
-#include "grainlab/errors.hpp"
-#include "grainlab/presets.hpp"
-#include "grainlab/report/csv_table.hpp"
-#include "grainlab/report/parallel_runs.hpp"
-#include "grainlab/run.hpp"
-#include "grainlab/scene.hpp"
-#include "grainlab/thread_cpu_clock.hpp"
-#include "tradeoff_metrics.hpp"
-#include "tradeoff_plot.hpp"
-#include "tradeoff_sweep.hpp"
+#include "grainlab/studies/draw/pareto_plot.hpp"
+#include "grainlab/studies/tradeoff/tradeoff_study.hpp"
 
 namespace grainlab {
 namespace {
-
-using tradeoff::Setting;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Keeps the shearing stage's samples of one run, nothing else.
-class ShearingRecorder : public RunObserver {
- public:
-  void onStart(const Scene& scene, const World&) override {
-    for (const StageSpec& s : scene.stages) {
-      if (s.type == StageSpec::Type::Biaxial) {
-        stage_ = s.name;
-        break;
-      }
-    }
-    const auto& columns = seriesColumns();
-    auto index = [&](const char* name) {
-      return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
-    };
-    strain_ = index("axial_strain");
-    phi_ = index("phi_mob_deg");
-    omega_ = index("omega_macro_deg");
-    macro_ = index("theta_sigma_macro_deg");
-    micro_ = index("theta_sigma_micro_deg");
-    inertial_ = index("inertial_number");
-    kinetic_ = index("kinetic_energy");
-  }
-  void onSample(const Sample& s, const World&) override {
-    if (s.stage != stage_) return;
-    auto at = [&](size_t k) { return k < s.values.size() ? s.values[k] : kNaN; };
-    samples.axialStrain.push_back(at(strain_));
-    samples.phiMobDeg.push_back(at(phi_));
-    samples.omegaMacroDeg.push_back(at(omega_));
-    samples.thetaSigmaMacroDeg.push_back(at(macro_));
-    samples.thetaSigmaMicroDeg.push_back(at(micro_));
-    samples.inertialNumber.push_back(at(inertial_));
-    samples.kineticEnergy.push_back(at(kinetic_));
-  }
-  tradeoff::ShearingSamples samples;
-
- private:
-  std::string stage_;
-  size_t strain_ = 0, phi_ = 0, omega_ = 0, macro_ = 0, micro_ = 0, inertial_ = 0, kinetic_ = 0;
-};
-
-struct Outcome {
-  RunSummary summary;
-  double cpuSeconds = kNaN;
-  double strainRate = kNaN;  // 1/s of the shearing stage
-  tradeoff::RunMetrics metrics;
-};
-
-struct Options {
-  std::string out;
-  bool quick = false;
-  unsigned jobs = 0;
-  std::vector<std::string> presets;
-  /// The cost the Pareto front is taken on: "cpu" (the run's own CPU seconds: its wall time
-  /// on an idle core, whatever else the machine runs) or "wall".
-  std::string cost = "cpu";
-};
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> items;
@@ -97,60 +21,13 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
-// Runs the scenes on up to `jobs` threads, most expensive first (the caller orders them).
-std::vector<Outcome> runAll(const std::vector<nlohmann::json>& scenes, const std::vector<std::string>& names,
-                            unsigned jobs) {
-  std::vector<Outcome> outcomes(scenes.size());
-  std::atomic<size_t> next{0}, done{0};
-  std::mutex progress;
-  auto worker = [&] {
-    for (size_t k = next++; k < scenes.size(); k = next++) {
-      Outcome& o = outcomes[k];
-      ShearingRecorder recorder;
-      try {
-        const Scene scene = parseScene(scenes[k]);
-        for (const StageSpec& s : scene.stages) {
-          if (s.type == StageSpec::Type::Biaxial) o.strainRate = s.strainRate;
-        }
-        const double cpu0 = threadCpuSeconds();
-        o.summary = runScene(scene, recorder);
-        o.cpuSeconds = threadCpuSeconds() - cpu0;
-      } catch (const std::exception& e) {  // a scene the parser refuses: set-up only
-        o.summary.status = RunStatus::Failed;
-        o.summary.error = e.what();
-      }
-      o.metrics = tradeoff::measureRun(recorder.samples, o.summary.peakPhiMobDeg, o.summary.voidRatioAfterConsolidation);
-      const std::lock_guard lock(progress);
-      std::cerr << "tradeoff: [" << ++done << "/" << scenes.size() << "] " << names[k] << ": " << o.summary.status
-                << " in " << std::setprecision(3) << o.summary.wallSeconds << " s"
-                << (o.summary.error.empty() ? "" : " (" + o.summary.error + ")") << "\n";
-    }
-  };
-  std::vector<std::thread> threads;
-  for (unsigned t = 0; t < report::concurrentRuns(jobs, scenes.size()); ++t) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
-  return outcomes;
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& i : items) s += (s.empty() ? "" : "; ") + i;
-  return s;
-}
-
-int presetVertices(const std::string& preset) {
-  const nlohmann::json scene = presetScene(preset);
-  if (!scene.contains("assembly") || scene["assembly"].value("shape", "disc") == "disc") return 0;
-  return scene["assembly"].value("vertices", 6);
-}
-
 }  // namespace
 
 int tradeoffCommand(const std::vector<std::string>& args) {
-  Options opt;
+  tradeoff::TradeoffOptions opt;
   for (size_t k = 0; k < args.size(); ++k) {
     const bool value = k + 1 < args.size();
-    if (args[k] == "--out" && value) opt.out = args[++k];
+    if (args[k] == "--out" && value) opt.outDir = args[++k];
     else if (args[k] == "--quick") opt.quick = true;
     else if (args[k] == "--jobs" && value) opt.jobs = static_cast<unsigned>(std::stoul(args[++k]));
     else if (args[k] == "--presets" && value) opt.presets = splitList(args[++k]);
@@ -160,161 +37,30 @@ int tradeoffCommand(const std::vector<std::string>& args) {
       return 2;
     }
   }
-  if (opt.out.empty()) {
+  if (opt.outDir.empty()) {
     std::cerr << "grainlab tradeoff: give --out DIR\n";
     return 2;
   }
-  tradeoff::SweepPlan plan = opt.quick ? tradeoff::quickPlan() : tradeoff::fullPlan();
-  if (!opt.presets.empty()) plan.presets = opt.presets;
-  for (const std::string& p : plan.presets) presetScene(p);  // an unknown preset fails here
-
-  // The engine axis exists only where the scene parser takes "box2d".
-  const std::optional<std::string> refusal = tradeoff::box2dRefusal(plan.presets.front());
-  if (refusal) std::cerr << "tradeoff: engine axis skipped: the parser refuses box2d (" << *refusal << ")\n";
-  const std::vector<Setting> settings = tradeoff::expandPlan(plan, refusal);
-
-  // One run per distinct scene; the baseline is shared by every axis.
-  std::vector<size_t> runOf(settings.size());
-  std::vector<size_t> runSetting;  // run -> its first setting
-  for (size_t k = 0; k < settings.size(); ++k) {
-    size_t r = 0;
-    while (r < runSetting.size() && !settings[runSetting[r]].sameRun(settings[k])) ++r;
-    if (r == runSetting.size()) runSetting.push_back(k);
-    runOf[k] = r;
-  }
-  // Most expensive first, so the last to finish is a short one: by timestep, shearing rate
-  // and shape (a polygon step costs a few disc steps).
-  std::vector<size_t> order(runSetting.size());
-  for (size_t r = 0; r < order.size(); ++r) order[r] = r;
-  auto cost = [&](size_t r) {
-    const Setting& s = settings[runSetting[r]];
-    const int vertices = s.vertices > 0 ? s.vertices : presetVertices(s.preset);
-    return (1 + 1e-3 / s.inertialNumber) / s.timestepSafety * (vertices > 0 ? vertices / 2.0 : 1.0);
-  };
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost(a) > cost(b); });
-
-  const std::filesystem::path dir = opt.out;
-  std::filesystem::create_directories(dir / "scenes");
-  std::vector<nlohmann::json> scenes;
-  std::vector<std::string> names, sceneFiles(runSetting.size());
-  for (size_t r : order) {
-    const Setting& s = settings[runSetting[r]];
-    scenes.push_back(tradeoff::settingScene(s));
-    names.push_back(s.preset + " " + s.axis + " " + s.value);
-    char file[32];
-    std::snprintf(file, sizeof file, "run-%02zu.json", r);
-    sceneFiles[r] = std::string("scenes/") + file;
-    std::ofstream(dir / sceneFiles[r]) << scenes.back().dump(2) << "\n";
-  }
-  std::cerr << "tradeoff: " << settings.size() << " settings, " << scenes.size() << " runs, "
-            << report::concurrentRuns(opt.jobs, scenes.size()) << " at a time\n";
-  const std::vector<Outcome> ordered = runAll(scenes, names, opt.jobs);
-  std::vector<Outcome> outcome(runSetting.size());
-  for (size_t k = 0; k < order.size(); ++k) outcome[order[k]] = ordered[k];
-
-  // Errors against each preset's reference run.
-  std::vector<std::vector<double>> errors(runSetting.size());
-  std::vector<double> maxAngle(runSetting.size(), kNaN), meanAngle(runSetting.size(), kNaN);
-  for (size_t r = 0; r < runSetting.size(); ++r) {
-    const Setting& s = settings[runSetting[r]];
-    size_t ref = 0;
-    while (!(settings[runSetting[ref]].preset == s.preset && settings[runSetting[ref]].axis == "reference")) ++ref;
-    const bool usable = outcome[r].summary.status == RunStatus::Completed && outcome[ref].summary.status == RunStatus::Completed;
-    errors[r] = usable ? tradeoff::metricErrors(outcome[r].metrics, outcome[ref].metrics)
-                       : std::vector<double>(tradeoff::errorNames().size(), kNaN);
-    maxAngle[r] = tradeoff::maxAngleErrorDeg(errors[r]);
-    meanAngle[r] = tradeoff::meanAngleErrorDeg(errors[r]);
-  }
-  // The Pareto front of cost against the mean angle error, per preset.
-  auto costOf = [&](size_t r) { return opt.cost == "cpu" ? outcome[r].cpuSeconds : outcome[r].summary.wallSeconds; };
-  std::vector<bool> onFront(runSetting.size(), false);
-  std::vector<tradeoff::ParetoPanel> panels;
-  for (const std::string& preset : plan.presets) {
-    std::vector<size_t> runs;
-    std::vector<double> seconds, error;
-    for (size_t r = 0; r < runSetting.size(); ++r) {
-      if (settings[runSetting[r]].preset != preset) continue;
-      runs.push_back(r);
-      seconds.push_back(costOf(r));
-      error.push_back(meanAngle[r]);
-    }
-    for (size_t i : tradeoff::paretoFront(seconds, error)) onFront[runs[i]] = true;
-    tradeoff::ParetoPanel panel{preset, {}};
-    for (size_t r : runs) {
-      const Setting& s = settings[runSetting[r]];
-      // The run shared by several axes is the baseline they all turn away from.
-      const bool baseline = std::count(runOf.begin(), runOf.end(), r) > 1;
-      const std::string axis = baseline ? "baseline" : s.axis;
-      const std::string label = baseline || s.axis == "reference" || s.axis == "noise" ? axis : s.value;
-      panel.points.push_back({costOf(r), meanAngle[r], label, axis, onFront[r]});
-      if (s.axis == "noise") panel.noiseFloor = meanAngle[r];
-    }
-    panels.push_back(panel);
-  }
-
-  std::vector<std::string> header{"preset", "axis", "value", "timestep_safety", "inertial_number", "strain_rate_per_s",
-                                  "vertices", "sample_strain", "engine", "status", "wall_s", "cpu_s", "steps",
-                                  "particles", "measured_inertial_number", "shearing_kinetic_energy",
-                                  "peak_phi_mob_deg", "phi_mob_20_deg"};
-  for (double e : tradeoff::kOmegaStrains) header.push_back("omega_" + std::to_string(std::lround(100 * e)) + "_deg");
-  header.insert(header.end(), {"theta_sigma_gap_deg", "void_ratio"});
-  for (const std::string& n : tradeoff::errorNames()) header.push_back("err_" + n);
-  header.insert(header.end(), {"mean_angle_error_deg", "max_angle_error_deg", "pareto", "scene", "note"});
-  report::CsvTable table(header);
-  for (size_t k = 0; k < settings.size(); ++k) {
-    const Setting& s = settings[k];
-    const size_t r = runOf[k];
-    const Outcome& o = outcome[r];
-    const tradeoff::RunMetrics& m = o.metrics;
-    const int vertices = s.vertices > 0 ? s.vertices : presetVertices(s.preset);
-    std::vector<report::CsvCell> row{s.preset, s.axis, s.value, s.timestepSafety, s.inertialNumber, o.strainRate,
-                                     vertices > 0 ? report::CsvCell(vertices) : report::CsvCell(""),
-                                     s.sampleStrain, s.engine, std::string(toString(o.summary.status)), o.summary.wallSeconds,
-                                     o.cpuSeconds, static_cast<double>(o.summary.steps), o.summary.particles,
-                                     m.inertialNumber, m.kineticEnergy, m.peakPhiMobDeg, m.phiMobAtEndDeg};
-    for (double w : m.omegaDeg) row.emplace_back(w);
-    row.insert(row.end(), {m.thetaSigmaGapDeg, m.voidRatio >= 0 ? m.voidRatio : kNaN});
-    for (double e : errors[r]) row.emplace_back(e);
-    std::vector<std::string> notes = o.summary.notes;
-    if (!o.summary.error.empty()) notes.insert(notes.begin(), o.summary.error);
-    row.insert(row.end(), {meanAngle[r], maxAngle[r], onFront[r] ? 1 : 0, sceneFiles[r], joined(notes)});
-    table.addRow(row);
-  }
-  if (refusal) {
-    for (const std::string& preset : plan.presets) {
-      std::vector<report::CsvCell> row(header.size(), report::CsvCell(""));
-      row[0] = preset;
-      row[1] = "engine";
-      row[2] = "box2d";
-      row[8] = "box2d";
-      row[9] = "skipped";
-      row.back() = "the scene parser refuses it: " + *refusal;
-      table.addRow(row);
-    }
-  }
-  table.write((dir / "tradeoff.csv").string());
+  const tradeoff::TradeoffStudy study = tradeoff::runTradeoff(opt, &std::cerr);
+  const std::filesystem::path dir = opt.outDir;
   const std::string xLabel = opt.cost == "cpu" ? "CPU time per run (s, log scale): its wall time on an idle core"
                                                : "wall time per run (s, log scale)";
-  std::ofstream(dir / "pareto.svg") << tradeoff::renderParetoSvg(panels, xLabel, "mean angle error vs reference (°)");
+  std::ofstream(dir / "pareto.svg") << tradeoff::renderParetoSvg(study.panels, xLabel, "mean angle error vs reference (°)");
 
   // A short table on stdout: cost and error of every setting.
   std::cout << std::left << std::setw(28) << "preset" << std::setw(17) << "axis" << std::setw(36) << "value"
             << std::setw(10) << "wall s" << std::setw(10) << "cpu s" << std::setw(12) << "mean err °" << std::setw(11)
             << "max err °" << std::setw(11) << "Δ void" << "front\n";
-  for (size_t k = 0; k < settings.size(); ++k) {
-    const size_t r = runOf[k];
-    const double voidError = errors[r].back();
-    std::cout << std::setw(28) << settings[k].preset << std::setw(17) << settings[k].axis << std::setw(36)
-              << settings[k].value << std::setw(10) << std::setprecision(3) << outcome[r].summary.wallSeconds
-              << std::setw(10) << std::setprecision(3) << outcome[r].cpuSeconds
-              << std::setw(12) << std::setprecision(3) << meanAngle[r] << std::setw(11) << maxAngle[r]
+  for (const tradeoff::SettingOutcome& s : study.settings) {
+    std::cout << std::setw(28) << s.setting.preset << std::setw(17) << s.setting.axis << std::setw(36)
+              << s.setting.value << std::setw(10) << std::setprecision(3) << s.wallSeconds
+              << std::setw(10) << std::setprecision(3) << s.cpuSeconds
+              << std::setw(12) << std::setprecision(3) << s.meanAngleErrorDeg << std::setw(11) << s.maxAngleErrorDeg
               << std::setw(11) << std::setprecision(2)
-              << voidError << (onFront[r] ? "*" : "") << "\n";
+              << s.voidRatioError << (s.onFront ? "*" : "") << "\n";
   }
   std::cerr << "tradeoff: wrote " << (dir / "tradeoff.csv").string() << " and " << (dir / "pareto.svg").string() << "\n";
-  size_t failed = 0;
-  for (const Outcome& o : outcome) failed += o.summary.status != RunStatus::Completed;
-  return failed == 0 ? 0 : 1;
+  return study.failedRuns == 0 ? 0 : 1;
 }
 
 }  // namespace grainlab

@@ -1,5 +1,5 @@
 // The mean of several runs and its 95 % Student-t interval at each x, for the Compare view's
-// ensemble mode: the same statistics as the report's (engine/report/src/ensemble_stats.cpp).
+// ensemble mode: the same statistics as the report's (engine/studies/src/paper/ensemble_stats.cpp).
 
 // t_{0.975} for 1..30 degrees of freedom; beyond, the Cornish-Fisher expansion.
 const T975 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145,

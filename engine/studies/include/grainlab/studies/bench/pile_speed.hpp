@@ -1,0 +1,34 @@
+#pragma once
+// `grainlab bench`'s measure: the engine's speed on a settled pile, in particle-steps per
+// second. The pile settles first, untimed, so it is dense with a realistic number of
+// contacts; then it steps `steps` times per timed repeat. It steps a World directly: through
+// runScene the stages' checks and the sampling would be timed too.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "grainlab/scene.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab::bench {
+
+struct PileSpeed {
+  std::string name;
+  int particles = 0;
+  double coordination = 0;    ///< contacts per particle (×2) when timing starts
+  std::vector<double> rates;  ///< particle-steps per second, one per repeat
+  double timestep = 0;        ///< s
+  double medianRate() const;
+};
+
+/// The bench's piles, by name: "disc-pile", "disc-pile+1poly" (the same discs and one
+/// far-away polygon: the general path, shape dispatch per pair, instead of the discs-only
+/// one) and "polygon-pile".
+std::vector<Scene> benchPiles();
+
+/// Settles `scene`'s pile (its first stage's duration), then times `repeats` × `steps` steps
+/// on `threads` threads. Progress lines go to `progress` (may be null).
+PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads,
+                           WorldSettings::Engine engine, std::ostream* progress);
+
+}  // namespace grainlab::bench

@@ -1,0 +1,37 @@
+// The bench's measure on a small pile: one rate per repeat, the settled pile's contacts
+// counted, and the median of the repeats.
+#include <gtest/gtest.h>
+
+#include "grainlab/bench_scenes.hpp"
+#include "grainlab/studies/bench/pile_speed.hpp"
+
+namespace grainlab::bench {
+namespace {
+
+TEST(PileSpeed, TimesEachRepeatOfASettledPile) {
+  const PileSpeed s = measurePileSpeed(pileScene(6, 6, false), 20, 3, 1, WorldSettings::Engine::Dem, nullptr);
+  EXPECT_EQ(s.particles, 36);
+  ASSERT_EQ(s.rates.size(), 3u);
+  for (double r : s.rates) EXPECT_GT(r, 0);
+  EXPECT_GT(s.coordination, 1);  // settled: the discs rest on each other
+  EXPECT_GT(s.timestep, 0);
+}
+
+TEST(PileSpeed, MedianOfOddAndEvenRepeats) {
+  PileSpeed s;
+  s.rates = {3, 1, 2};
+  EXPECT_DOUBLE_EQ(s.medianRate(), 2);
+  s.rates = {4, 1, 3, 2};
+  EXPECT_DOUBLE_EQ(s.medianRate(), 2.5);
+}
+
+TEST(PileSpeed, TheGeneralPathPileIsTheDiscPileAndOnePolygon) {
+  const std::vector<Scene> piles = benchPiles();
+  ASSERT_EQ(piles.size(), 3u);
+  EXPECT_EQ(piles[1].name, "disc-pile+1poly");
+  EXPECT_EQ(piles[1].particles.size(), piles[0].particles.size() + 1);
+  EXPECT_EQ(piles[1].particles.back().shape, ShapeKind::Polygon);
+}
+
+}  // namespace
+}  // namespace grainlab::bench
