@@ -95,7 +95,7 @@ AssemblyResult loadAssemblyResult(const std::string& runDir, const std::string& 
     const auto it = std::find(columns.begin(), columns.end(), header[k]);
     if (it != columns.end()) slot[k] = static_cast<int>(it - columns.begin());
   }
-  const size_t stageColumn = seriesColumnIndex("stage"), stepColumn = seriesColumnIndex("step");
+  constexpr size_t stageColumn = columnIndex(SeriesColumnId::Stage), stepColumn = columnIndex(SeriesColumnId::Step);
   ShearingCollector collector(result, biaxialStageIndex(scene));
   while (std::getline(series, line)) {
     if (line.empty()) continue;

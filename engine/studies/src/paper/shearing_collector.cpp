@@ -20,7 +20,7 @@ ShearingCollector::ShearingCollector(AssemblyResult& result, int shearingStage)
 
 void ShearingCollector::add(std::int64_t step, const std::vector<double>& values,
                             const analysis::PolarHistograms* histograms) {
-  static const size_t stageColumn = seriesColumnIndex("stage");
+  constexpr size_t stageColumn = columnIndex(SeriesColumnId::Stage);
   const double stageValue = stageColumn < values.size() ? values[stageColumn] : NAN;
   const int stage = std::isfinite(stageValue) ? static_cast<int>(stageValue) : -1;
   if (shearingStage_ < 0 || stage < 0 || stage > shearingStage_) return;
@@ -38,7 +38,8 @@ void ShearingCollector::add(std::int64_t step, const std::vector<double>& values
     if (before_ && beforeStep_ != step) {
       std::vector<double> start = *before_;
       // Strains are measured from the shearing's start, which is this very state.
-      for (const char* name : {"axial_strain", "lateral_strain", "volumetric_strain"}) start[seriesColumnIndex(name)] = 0.0;
+      using Id = SeriesColumnId;
+      for (Id c : {Id::AxialStrain, Id::LateralStrain, Id::VolumetricStrain}) start[columnIndex(c)] = 0.0;
       start[stageColumn] = shearingStage_;
       append(std::move(start), beforeHistograms_ ? &*beforeHistograms_ : nullptr);
     }
@@ -47,7 +48,7 @@ void ShearingCollector::add(std::int64_t step, const std::vector<double>& values
 }
 
 void ShearingCollector::append(std::vector<double> values, const analysis::PolarHistograms* histograms) {
-  static const size_t strainColumn = seriesColumnIndex("axial_strain");
+  constexpr size_t strainColumn = columnIndex(SeriesColumnId::AxialStrain);
   const double strain = values[strainColumn];
   result_->shearing.append(seriesColumns(), values);
   if (!histograms || !std::isfinite(strain)) return;

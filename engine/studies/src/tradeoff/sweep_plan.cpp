@@ -22,7 +22,7 @@ std::string text(double v) {
 
 json& biaxialStage(json& scene) {
   for (json& stage : scene["stages"]) {
-    if (stage.value("type", "") == "biaxial") return stage;
+    if (stage.value("type", "") == toString(StageSpec::Type::Biaxial)) return stage;
   }
   throw SceneError("stages", "the scene has no biaxial stage to shear");
 }
