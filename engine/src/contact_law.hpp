@@ -1,9 +1,9 @@
 #pragma once
 // Contact laws, composed from a normal model and a tangential model (as LAMMPS GRANULAR
 // composes its sub-models). Each model is a small value type with inline force functions;
-// the World instantiates its force loop once per combination, so a law costs no virtual
-// call per contact. To add a law (Hertz-Mindlin, rolling resistance): write its model here
-// with the same members, and add one case to World::computeForces' dispatch.
+// the ContactSolver instantiates its force loop once per combination, so a law costs no
+// virtual call per contact. To add a law (Hertz-Mindlin, rolling resistance): write its model
+// here with the same members, and add one case to ContactSolver::computeForces' dispatch.
 #include <cmath>
 
 #include "grainlab/math.hpp"
