@@ -1,12 +1,11 @@
 #include "grainlab/run_status.hpp"
 
-#include <array>
-#include <utility>
+#include "grainlab/name_table.hpp"
 
 namespace grainlab {
 namespace {
 
-constexpr std::array<std::pair<RunStatus, std::string_view>, 6> kNames{{
+constexpr NameTable<RunStatus, 6> kNames{{
     {RunStatus::Queued, "queued"},
     {RunStatus::Running, "running"},
     {RunStatus::Completed, "completed"},
@@ -17,18 +16,8 @@ constexpr std::array<std::pair<RunStatus, std::string_view>, 6> kNames{{
 
 }  // namespace
 
-std::string_view toString(RunStatus status) {
-  for (const auto& [s, name] : kNames) {
-    if (s == status) return name;
-  }
-  return "unknown";
-}
+std::string_view toString(RunStatus status) { return nameIn(kNames, status); }
 
-std::optional<RunStatus> parseRunStatus(std::string_view text) {
-  for (const auto& [s, name] : kNames) {
-    if (name == text) return s;
-  }
-  return std::nullopt;
-}
+std::optional<RunStatus> parseRunStatus(std::string_view text) { return valueIn(kNames, text); }
 
 }  // namespace grainlab

@@ -1,13 +1,11 @@
-#include <array>
-#include <utility>
-
+#include "grainlab/name_table.hpp"
 #include "grainlab/scene.hpp"
 
 namespace grainlab {
 namespace {
 
 using Type = StageSpec::Type;
-constexpr std::array<std::pair<Type, std::string_view>, 7> kNames{{
+constexpr NameTable<Type, 7> kNames{{
     {Type::Free, "free"},
     {Type::Compaction, "compaction"},
     {Type::Isotropic, "isotropic"},
@@ -24,19 +22,9 @@ constexpr std::array<Type, kNames.size()> kTypes = [] {
 
 }  // namespace
 
-std::string_view toString(StageSpec::Type type) {
-  for (const auto& [t, name] : kNames) {
-    if (t == type) return name;
-  }
-  return "unknown";
-}
+std::string_view toString(StageSpec::Type type) { return nameIn(kNames, type); }
 
-std::optional<StageSpec::Type> parseStageType(std::string_view name) {
-  for (const auto& [t, n] : kNames) {
-    if (n == name) return t;
-  }
-  return std::nullopt;
-}
+std::optional<StageSpec::Type> parseStageType(std::string_view name) { return valueIn(kNames, name); }
 
 std::span<const StageSpec::Type> stageTypes() { return kTypes; }
 
