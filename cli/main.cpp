@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "check_command.hpp"
 #include "columns_command.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/run_output.hpp"
@@ -36,6 +37,8 @@ int usage(std::ostream& out, int code) {
          "                               outputs end as the uninterrupted run's would\n"
          "  presets                      list the presets\n"
          "  columns [--json|--markdown]  series.csv's columns: name, unit, meaning\n"
+         "  check SCENE.json | --preset NAME\n"
+         "                               validate a scene and estimate its run (nothing is written)\n"
          "  preset NAME                  print a preset as scene JSON\n"
          "  bench [--steps N] [--repeats N] [--threads N] [--scene NAME]\n"
          "                               speed on settled piles of discs and polygons\n"
@@ -116,6 +119,7 @@ int main(int argc, char** argv) {
     if (command == "run") return grainlab::runCommand(args);
     if (command == "resume") return grainlab::resumeCommand(args);
     if (command == "columns") return grainlab::columnsCommand(args);
+    if (command == "check") return grainlab::checkCommand(args);
     if (command == "presets") {
       for (const std::string& name : grainlab::presetNames()) std::cout << name << "\n";
       return 0;

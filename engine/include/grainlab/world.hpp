@@ -68,12 +68,13 @@ class World {
   /// The stability bound of the packing as it now stands, which can be well below the
   /// single-contact criticalTimestep(): a particle held by Z contacts vibrates up to √Z times
   /// faster than against one (a Gershgorin bound), and viscous damping of ratio ζ lowers
-  /// leapfrog's limit by the factor √(1+ζ²) − ζ. Infinite with no contacts. `particle` and
+  /// leapfrog's limit by the factor √(1+ζ²) − ζ. Infinite with no contacts, and for box2d
+  /// (rigid contacts have no spring). `particle` and
   /// `contacts` (optional) receive the particle that sets it and its contact count.
   double packingTimestep(int* particle = nullptr, int* contacts = nullptr) const;
   WorldSettings::Engine engine() const { return settings_.engine; }
   /// The normal stiffness a contact shows to slow loading, N/m: k_n for dem; for box2d the
-  /// rigid solver's apparent stiffness (RigidBodySolver::apparentStiffness). Servo gains
+  /// rigid solver's apparent stiffness (RigidBodySolver::contactStiffness). Servo gains
   /// are derived from it.
   double contactStiffness() const;
 
@@ -84,7 +85,7 @@ class World {
   /// particle and wall is in (step() calls it if needed). Throws SimulationError if the
   /// timestep exceeds the critical one: explicit integration would be unstable.
   void initialize();
-  /// Advances one timestep: kick, drift, neighbour update, forces.
+  /// Advances one timestep: the solver's step (dem: kick, drift, neighbour update, forces).
   void step();
   /// Checkpoints: everything the next step depends on (state, contact history, kept polygon
   /// features, the box2d engine's bodies and warm-start impulses), saved into `a`, or loaded
