@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -104,7 +104,8 @@ void RigidBodySolver::initialize(double dt) {
   halfWidth_ = 2 * extent * lengthScale_ + 1000;
   std::vector<BodyState> bodies(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
-    const b2Vec2 x = toB2((particles_.position[k] - origin_) * lengthScale_), v = toB2(particles_.velocity[k] * lengthScale_);
+    const b2Vec2 x = toB2((particles_.position[k] - origin_) * lengthScale_);
+    const b2Vec2 v = toB2(particles_.velocity[k] * lengthScale_);
     bodies[k] = {x.x, x.y, static_cast<float>(particles_.angle[k]), v.x, v.y, static_cast<float>(particles_.spin[k])};
   }
   build(bodies, {});
