@@ -88,11 +88,6 @@ void RigidBodySolver::initialize(double dt) {
     massScale_ = n / mass;
     origin_ /= n;
   }
-  b2_ = std::make_unique<b2World>(toB2(particles_.gravity * lengthScale_));
-  b2_->SetAllowSleeping(false);
-  b2_->SetContinuousPhysics(false);
-  b2_->SetSubStepping(false);
-  b2_->SetWarmStarting(true);
   // Walls are boxes reaching far past every particle: twice the particles' extent about the
   // origin, plus a thousand mean radii (a block sliding down a slope must not fall off its
   // end). Their vertices are then ~1e3 units out, where float rounding is ~1e-4 units, 2% of
