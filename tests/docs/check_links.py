@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails on any reference in README.md or docs/ that a reader of the repository cannot follow:
+"""Fails on any note to the project's developers (issues, sessions, "the lead") and on any reference in README.md or docs/ that a reader of the repository cannot follow:
 a markdown link whose relative target does not exist or leaves the repository, any mention of
 the project's private ../shared notes, a named .md page that is not in the repository, and a
 path into the source tree (docs/, engine/, scripts/, ...) that does not exist."""
@@ -21,6 +21,10 @@ md_name = re.compile(r"(?<![\w/.-])((?:\.\./|\./)?(?:[\w.-]+/)*[\w-]+\.md)\b")
 tree_dirs = "docs|engine|scripts|tests|python|examples|web|server|cli|bench|docker"
 tree_path = re.compile(r"(?<![\w/.-])((?:%s)/[\w./-]*[\w-])" % tree_dirs)
 code_span = re.compile(r"`[^`\n]+`")
+# Notes to the project's own developers belong in commit messages, not in user docs.
+colleague_note = re.compile(
+    r"\b(?:[Ii]ssues? \d+|the issue(?:'s)?|[Tt]he lead\b|(?:development )?[Ss]essions? \d+|"
+    r"the session's|engineers?\b|coordinator)")
 fenced = re.compile(r"^```.*?^```", re.M | re.S)
 
 
@@ -39,6 +43,9 @@ for md in files:
     text = md.read_text(encoding="utf-8")
     prose = fenced.sub("", text)
     for line_no, line in enumerate(text.splitlines(), 1):
+        note = colleague_note.search(line)
+        if note:
+            problems.append(f"{where}:{line_no}: a note to developers (\"{note.group(0)}\"): {line.strip()[:100]}")
         if outside.search(line):
             problems.append(f"{where}:{line_no}: points outside the repository: {line.strip()[:100]}")
     for pattern in link_patterns:
