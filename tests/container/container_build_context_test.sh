@@ -158,12 +158,18 @@ apt_packages runtime >"$tmp/runtime-stage"
 [[ -s $tmp/runtime-stage ]] || fail "no apt-get install in the runtime stage"
 
 extra=$(comm -23 "$tmp/build-stage" "$tmp/setup" | tr '\n' ' ')
-[[ -z $extra ]] && ok "every build-stage package is in scripts/setup" ||
+if [[ -z $extra ]]; then
+  ok "every build-stage package is in scripts/setup"
+else
   fail "the build stage installs what scripts/setup does not (the host build never tests with it): $extra"
+fi
 
 dev_in_runtime=$(grep -- '-dev$' "$tmp/runtime-stage" | tr '\n' ' ' || true)
-[[ -z $dev_in_runtime ]] && ok "the runtime stage installs no -dev package" ||
+if [[ -z $dev_in_runtime ]]; then
+  ok "the runtime stage installs no -dev package"
+else
   fail "the runtime stage installs -dev packages: $dev_in_runtime"
+fi
 
 # The packages whose files the configured build used: the files CMake read (its makefile's
 # dependencies) and the paths it cached, outside the build. Standard prefixes are left out:
@@ -198,7 +204,7 @@ dev_closure() {
     if [[ $seen == *" $p "* ]]; then continue; fi
     seen+="$p "
     echo "$p"
-    for d in $(dpkg-query -W -f='${Depends}' "$p" 2>/dev/null | tr ',|' '\n\n' | sed 's/(.*//; s/:.*//; s/ //g'); do
+    for d in $(dpkg-query -W -f='${Depends}' "$p" 2>/dev/null | tr ',|' '\n' | sed 's/(.*//; s/:.*//; s/ //g'); do
       if [[ $d == *-dev ]]; then queue+=("$d"); fi
     done
   done
