@@ -113,7 +113,10 @@ for copy in "${copies[@]}"; do
 done
 
 configure() {  # configure SOURCE BUILD: the build stage's cmake step, compile commands kept
-  "$cmake" -S "$1" -B "$2" "${cmake_options[@]}" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >"$2.log" 2>&1
+  # Makefiles, as in the image (no CMAKE_GENERATOR there): the package check reads the files
+  # CMake read from CMakeFiles/Makefile.cmake.
+  "$cmake" -S "$1" -B "$2" -G "Unix Makefiles" "${cmake_options[@]}" \
+    -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >"$2.log" 2>&1
 }
 build=$tmp/build
 echo "configuring the copy: cmake -S . -B build ${cmake_options[*]}"
