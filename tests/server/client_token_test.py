@@ -22,7 +22,10 @@ LONG = {"name": "long", "particles": [{"shape": "disc", "radius": 0.002, "positi
 class ClientTokenTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.dir = tempfile.TemporaryDirectory(dir=os.environ.get("GRAINLAB_TEST_TMP"))
+        scratch = os.environ.get("GRAINLAB_TEST_TMP")
+        if scratch:
+            os.makedirs(scratch, exist_ok=True)
+        cls.dir = tempfile.TemporaryDirectory(dir=scratch)
         cls.log = open(os.path.join(cls.dir.name, "serve.log"), "w+")
         env = dict(os.environ, GRAINLAB_TOKEN=FULL, GRAINLAB_READ_ONLY_TOKEN=READ)
         cls.server = subprocess.Popen([SERVER, "--host", "127.0.0.1", "--port", "0", "--db",

@@ -52,7 +52,7 @@ expect "the dashboard's own cancel (no body)" 202 '"cancel_requested":true'
 stop_server
 
 # ---- listening on every address: a token is required, made at start-up when none is given ----
-start_server "$TMP_ROOT/generated.log" "$TMP_ROOT/generated.db" --host 0.0.0.0
+start_server "$TMP_ROOT/generated.log" "$TMP_ROOT/generated.db" --host 0.0.0.0 --web "$GRAINLAB_WEB"
 req GET /api/runs
 expect "no token on a non-loopback bind is refused with 401" 401
 check "...saying nothing more" test "$BODY" = '{"error":"a token is required"}'
