@@ -42,7 +42,10 @@ check "a DELETE under a rebound name is refused (got $STATUS)" test "$STATUS" = 
 req GET "/api/runs/$id"
 expect "...and the run is still there" 200
 
-# Cross-site WebSocket hijacking: a page elsewhere opening the live stream.
+# Cross-site WebSocket hijacking: a page elsewhere opening the live stream (of a run of its
+# own, so this check does not depend on the DELETE above).
+req POST /api/runs -d "$LONG_SCENE"
+id=$(json b.id)
 upgrade "/api/runs/$id/stream" -H "Origin: $EVIL"
 expect "a WebSocket upgrade from a foreign Origin is refused with 403" 403
 upgrade "/api/runs/$id/stream" -H "Origin: $(BASE)"
