@@ -29,6 +29,23 @@ await runBrowserTest(['--token-file', tokenFile], async ({ server, browser }) =>
   await screenshot(anonymous, 'token-login-form');
   await anonymous.close();
 
+  // The form, in a browser profile of its own: a wrong token is said so, the right one logs in.
+  const pasting = await browser.newContext();
+  const form = await pasting.newPage();
+  form.setDefaultTimeout(30000);
+  await form.goto(`${base}/#/runs`);
+  await form.locator('#login input[name="token"]').fill('not-the-token-at-all-0000');
+  await form.locator('#login button').click();
+  await form.getByText('That token was not accepted.').waitFor({ state: 'visible' });
+  check('the form says when a pasted token is wrong', true);
+  await form.locator('#login input[name="token"]').fill(TOKEN);
+  await Promise.all([form.waitForEvent('load'), form.locator('#login button').click()]);
+  await form.locator('.server-state').waitFor({ state: 'visible' });
+  const pasted = (await pasting.cookies(base)).find((c) => c.name.startsWith('grainlab_token_'));
+  check('the right token pasted there logs in (cookie set, form gone after the reload)',
+    pasted?.value === TOKEN && pasted?.httpOnly && !(await form.locator('#login').isVisible()));
+  await pasting.close();
+
   // Through the login URL.
   const page = await context.newPage();
   page.setDefaultTimeout(30000);
