@@ -151,12 +151,13 @@ std::optional<ApiResponse> AccessPolicy::check(const AccessRequest& request) {
 
   // The path as the router will see it: "/%61pi/runs" is /api/runs too.
   const std::string_view rawPath = request.target.substr(0, request.target.find('?'));
-  const std::optional<std::string> path = percentDecode(rawPath);
-  const bool api = !path || *path == "/api" || path->starts_with("/api/");
+  // A path that does not decode is held to the API's rules (the router then refuses it).
+  const std::string path = percentDecode(rawPath).value_or("/api/");
+  const bool api = path == "/api" || path.starts_with("/api/");
   if (!api) return std::nullopt;  // the dashboard's files: nothing secret, and the login page
-  if (*path == "/api/health") return std::nullopt;  // a liveness probe needs no secret
+  if (path == "/api/health") return std::nullopt;  // a liveness probe needs no secret
 
-  const bool session = *path == "/api/session";
+  const bool session = path == "/api/session";
   if (tokenRequired()) {
     const auto now = FailureLimiter::Clock::now();
     if (const long wait = failures_.blockedFor(request.peer, now); wait > 0) {
