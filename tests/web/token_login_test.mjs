@@ -53,7 +53,9 @@ await runBrowserTest(['--token-file', tokenFile], async ({ server, browser }) =>
   await page.goto(`${base}/?token=${TOKEN}#/runs`);
   await waitUntil(async () => !page.url().includes('token'), 10);
   check('the token is taken out of the address bar', !page.url().includes('token') && page.url().endsWith('#/runs'), page.url());
-  const cookie = (await context.cookies(base)).find((c) => c.name.startsWith('grainlab_token_'));
+  // The address bar is cleaned before the trade is answered: wait for the answer's cookie.
+  const cookie = await waitUntil(async () =>
+    (await context.cookies(base)).find((c) => c.name.startsWith('grainlab_token_')), 10);
   check('it is kept in a cookie for this port', cookie?.name === `grainlab_token_${new URL(base).port}` && cookie?.value === TOKEN);
   check('...HttpOnly and SameSite=Strict', cookie?.httpOnly === true && cookie?.sameSite === 'Strict', JSON.stringify(cookie));
   check('...out of reach of the page\'s scripts', !(await page.evaluate(() => document.cookie)).includes(TOKEN));
