@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 // refused by field before any of the state is loaded into its world.
 struct SpecimenIdentity {
   std::uint32_t engine = 0;
+  std::uint64_t seed = 0;
   std::uint64_t particles = 0;
   std::vector<std::uint8_t> shapes;
   double massFingerprint = 0;
@@ -32,6 +33,7 @@ struct SpecimenIdentity {
   static SpecimenIdentity of(const Scene& scene, const World& world, std::size_t stageIndex) {
     SpecimenIdentity id;
     id.engine = static_cast<std::uint32_t>(scene.solver.engine);
+    id.seed = scene.seed;
     id.particles = static_cast<std::uint64_t>(world.size());
     for (ShapeKind k : world.shapes()) id.shapes.push_back(static_cast<std::uint8_t>(k));
     for (double m : world.masses()) id.massFingerprint = id.massFingerprint * 1.000001 + m;
@@ -44,6 +46,7 @@ struct SpecimenIdentity {
   void persist(StateArchive& a) {
     a.section("specimen");
     a(engine);
+    a(seed);
     a(particles);
     a(shapes);
     a(massFingerprint);
@@ -65,19 +68,23 @@ void checkFits(const SpecimenIdentity& saved, const SpecimenIdentity& scene, con
     refuse("the specimen was prepared with solver.engine \"" + engineName(saved.engine) + "\", this scene's is \"" +
            engineName(scene.engine) + "\" (a specimen's contacts belong to its engine)");
   }
+  if (saved.seed != scene.seed) {
+    refuse("the specimen was generated with seed " + std::to_string(saved.seed) + ", this scene's seed is " +
+           std::to_string(scene.seed));
+  }
+  // Shapes before the count: "a disc, not a polygon" says more than two counts do.
+  const std::size_t common = std::min(saved.shapes.size(), scene.shapes.size());
+  for (std::size_t k = 0; k < common; ++k) {
+    if (saved.shapes[k] == scene.shapes[k]) continue;
+    refuse("the specimen's particle " + std::to_string(k) + " is a " + (saved.shapes[k] ? "polygon" : "disc") +
+           ", this scene's is a " + (scene.shapes[k] ? "polygon" : "disc") + " (another assembly)");
+  }
   if (saved.particles != scene.particles) {
     refuse("the specimen has " + std::to_string(saved.particles) + " particles, this scene's assembly makes " +
            std::to_string(scene.particles));
   }
-  if (saved.shapes != scene.shapes) {
-    std::size_t k = 0;
-    while (saved.shapes[k] == scene.shapes[k]) ++k;
-    refuse("the specimen's particle " + std::to_string(k) + " is a " + (saved.shapes[k] ? "polygon" : "disc") +
-           ", this scene's is a " + (scene.shapes[k] ? "polygon" : "disc") + " (another assembly)");
-  }
   if (saved.massFingerprint != scene.massFingerprint) {
-    refuse("the specimen's particles differ in size from those this scene's assembly makes (another seed or grading: "
-           "the scene's seed is " + std::to_string(s.seed) + ")");
+    refuse("the specimen's particles differ in size from those this scene's assembly makes (another grading)");
   }
   const Material &a = saved.material, &b = scene.material;
   if (a.density != b.density || a.normalStiffness != b.normalStiffness || a.tangentialStiffness != b.tangentialStiffness ||
