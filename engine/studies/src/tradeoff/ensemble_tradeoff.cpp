@@ -284,8 +284,8 @@ EnsembleStudy runEnsembleTradeoff(const TradeoffOptions& opt, std::ostream* prog
       if (note.empty()) note = x.summary.error;
     }
     if (off > kLateralStressHeld) {
-      note += std::string(note.empty() ? "" : "; ") + "sigma11 held only to " + text(100 * off) +
-              "% (median) of its target (reference: " + text(100 * lateral(ref)) +
+      note += std::string(note.empty() ? "" : "; ") + "sigma11 is " + text(100 * off) +
+              "% off its target (median over shearing; reference: " + text(100 * lateral(ref)) +
               "%): the lateral servo does not follow this shearing, so the setting tests another boundary condition";
     }
     for (size_t q = 0; q < quantities.size(); ++q) {
