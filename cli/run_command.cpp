@@ -62,6 +62,14 @@ int failedWriting(const std::exception& e, const std::string& dir) {
   return 1;
 }
 
+// --from DIR[:STAGE]: the scene's start_from. The stage follows the last ':' when what follows
+// it names no folder (a directory may itself contain ':').
+nlohmann::json startFromArgument(const std::string& from) {
+  const size_t colon = from.rfind(':');
+  if (colon == std::string::npos || from.find('/', colon) != std::string::npos) return {{"run", from}};
+  return {{"run", from.substr(0, colon)}, {"stage", from.substr(colon + 1)}};
+}
+
 void catchStopSignals() {
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
@@ -70,13 +78,14 @@ void catchStopSignals() {
 }  // namespace
 
 int runCommand(const std::vector<std::string>& args) {
-  std::string scenePath, preset, out;
+  std::string scenePath, preset, out, from;
   bool vtk = false, force = false;
   for (size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--out" && k + 1 < args.size()) out = args[++k];
     else if (args[k] == "--vtk") vtk = true;
     else if (args[k] == "--force") force = true;
     else if (args[k] == "--preset" && k + 1 < args.size()) preset = args[++k];
+    else if (args[k] == "--from" && k + 1 < args.size()) from = args[++k];
     else if (!args[k].empty() && args[k][0] != '-' && scenePath.empty()) scenePath = args[k];
     else {
       std::cerr << "grainlab run: unexpected argument " << args[k] << " (grainlab help lists the options)\n";
@@ -89,6 +98,7 @@ int runCommand(const std::vector<std::string>& args) {
   }
   nlohmann::json json = preset.empty() ? loadSceneJson(scenePath) : presetScene(preset);
   if (vtk && json.is_object()) json["output"]["vtk"] = true;
+  if (!from.empty() && json.is_object()) json["start_from"] = startFromArgument(from);
   const Scene scene = parseScene(json);  // the whole scene is validated before anything is written
   CliRunOutput output(out, scene, &std::cerr);
   // A run estimated to take longer than this is refused unless --force: it is a typo (a
@@ -99,12 +109,14 @@ int runCommand(const std::vector<std::string>& args) {
   catchStopSignals();
   RunSummary summary;
   try {
-    summary = runScene(scene, output, limits, checkpoint);
+    summary = runScene(scene, output, limits, checkpoint, out);
   } catch (const std::exception& e) {
     return failedWriting(e, out);
   }
   if (summary.refused) {
-    std::cerr << "error: " << summary.error << " (grainlab run --force runs it anyway)\n";
+    // A specimen that is missing or does not fit (start_from) is not a cost --force could waive.
+    const bool specimen = summary.error.rfind("start_from", 0) == 0;
+    std::cerr << "error: " << summary.error << (specimen ? "" : " (grainlab run --force runs it anyway)") << "\n";
     return 2;
   }
   return report(summary, output, out);
@@ -135,7 +147,7 @@ int resumeCommand(const std::vector<std::string>& args) {
   catchStopSignals();
   RunSummary summary;
   try {
-    summary = resumeRun(path, output, CheckpointPolicy{path, scene.output.checkpointEverySeconds, {}});
+    summary = resumeRun(path, output, CheckpointPolicy{path, scene.output.checkpointEverySeconds, {}}, dir);
   } catch (const std::exception& e) {
     return failedWriting(e, dir);
   }

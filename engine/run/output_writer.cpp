@@ -73,6 +73,10 @@ nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
     s["checkpoints"] = {{"written", summary.checkpoints}, {"seconds", summary.checkpointSeconds}};
     if (!summary.checkpointError.empty()) s["checkpoints"]["last_error"] = summary.checkpointError;
   }
+  if (summary.stageCheckpoints > 0) {
+    s["stage_checkpoints"] = {{"written", summary.stageCheckpoints}, {"bytes", summary.stageCheckpointBytes},
+                              {"seconds", summary.stageCheckpointSeconds}};
+  }
   const Profile& p = world.profile();
   s["profile_seconds"] = {{"neighbors", p.neighbors}, {"forces", p.forces}, {"integrate", p.integrate},
                           {"neighbor_rebuilds", p.rebuilds},

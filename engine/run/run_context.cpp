@@ -94,6 +94,7 @@ void RunContext::sample(RunObserver& observer) {
   lastSampleStep_ = world_->stepCount();
   world_->checkHealth();  // a diverged state never reaches the results
   const double rate = membrane_ ? membrane_->rateMagnitude() : 0.0;
+  lastSampleRate_ = rate;
   const auto t0 = std::chrono::steady_clock::now();
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
   sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -37,6 +37,12 @@ class RunContext {
   /// (into a context just built from the same scene) rebuilds that stage on the loaded world
   /// and then loads its state: stage() is then the stage to go on with.
   void persist(StateArchive& a);
+  /// Stage checkpoints (prepared_specimen.cpp): the world, the ring, the sampler and the last
+  /// sample's step between two stages, with no stage under way.
+  void persistSpecimen(StateArchive& a);
+  /// A run started from a prepared specimen: the row the preparation's run sampled last (the
+  /// state the specimen was kept in), sampled again from the loaded state.
+  void sampleSpecimen(RunObserver& observer);
 
  private:
   const Scene& scene_;
@@ -47,6 +53,7 @@ class RunContext {
   size_t stageIndex_ = 0;
   double nextSample_ = 0;
   std::int64_t lastSampleStep_ = -1;
+  double lastSampleRate_ = 0;  // the ring's strain rate at the last sample (its inertial number)
   double voidRatioAfterConsolidation_ = -1;
   double sampleSeconds_ = 0;
 };

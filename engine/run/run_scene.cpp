@@ -7,8 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "grainlab/errors.hpp"
+#include "grainlab/prepared_specimen.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/world.hpp"
+#include "prepared_specimen.hpp"
 #include "run_context.hpp"
 
 namespace grainlab {
@@ -64,9 +66,9 @@ struct LoopState {
 class RunLoop {
  public:
   RunLoop(const Scene& scene, RunContext& context, RunObserver& observer, const CheckpointPolicy& policy,
-          Clock::time_point start)
+          const std::string& stageDirectory, Clock::time_point start)
       : scene_(scene), context_(context), world_(context.world()), observer_(observer), policy_(policy),
-        start_(start), lastCheckpoint_(Clock::now()) {}
+        stageDirectory_(stageDirectory), start_(start), lastCheckpoint_(Clock::now()) {}
 
   void run(LoopState& loop, RunSummary& summary, bool resumed) {
     const double totalWork = context_.totalWork();
@@ -106,6 +108,7 @@ class RunLoop {
       if (const std::string note = stage.endNote(); !note.empty()) summary.notes.push_back(note);
       loop.workDone += stage.work();
       context_.endStage();
+      keepStage(s, loop, summary);
     }
   }
 
@@ -138,21 +141,39 @@ class RunLoop {
     lastCheckpoint_ = Clock::now();
   }
 
+  // The specimen as this stage left it, for runs that start from it (prepared_specimen.hpp).
+  // Like a checkpoint, one that cannot be written is said and the run goes on.
+  void keepStage(size_t s, const LoopState& loop, RunSummary& summary) {
+    if (stageDirectory_.empty() || !keepsStageCheckpoints(scene_)) return;
+    const auto t0 = Clock::now();
+    try {
+      summary.stageCheckpointBytes +=
+          writeStageCheckpoint(stageCheckpointPath(stageDirectory_, scene_.stages[s].name), scene_, context_, s,
+                               PreparedHistory{summary.notes, loop.timestepNoted});
+      ++summary.stageCheckpoints;
+    } catch (const std::exception& e) {
+      summary.checkpointError = e.what();
+    }
+    summary.stageCheckpointSeconds += since(t0);
+  }
+
   const Scene& scene_;
   RunContext& context_;
   World& world_;
   RunObserver& observer_;
   const CheckpointPolicy& policy_;
+  const std::string& stageDirectory_;
   Clock::time_point start_;
   Clock::time_point lastCheckpoint_;
 };
 
 // Runs the loop, turns what it throws into a failed summary, and finishes the summary.
 RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer, const CheckpointPolicy& policy,
-                  LoopState& loop, RunSummary summary, bool resumed, Clock::time_point start) {
+                  const std::string& stageDirectory, LoopState& loop, RunSummary summary, bool resumed,
+                  Clock::time_point start) {
   World& world = context.world();
   try {
-    RunLoop(scene, context, observer, policy, start).run(loop, summary, resumed);
+    RunLoop(scene, context, observer, policy, stageDirectory, start).run(loop, summary, resumed);
   } catch (const std::exception& e) {
     summary.status = RunStatus::Failed;
     summary.error = e.what();
@@ -208,7 +229,8 @@ Scene checkpointScene(const std::string& path) {
   return parseScene(nlohmann::json::parse(json));
 }
 
-RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits, const CheckpointPolicy& checkpoint) {
+RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits, const CheckpointPolicy& checkpoint,
+                    const std::string& stageDirectory) {
   const auto start = Clock::now();
   RunSummary summary;
   std::unique_ptr<RunContext> context;
@@ -218,6 +240,24 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
     summary.status = RunStatus::Failed;
     summary.error = e.what();
     return summary;
+  }
+  LoopState loop;
+  if (scene.startFrom) {
+    // A prepared specimen stands in for the scene's first stages; one that is missing or does
+    // not fit the scene is refused before anything is written.
+    try {
+      PreparedHistory history;
+      loop.stage = loadPreparedSpecimen(scene, *context, history);
+      for (size_t s = 0; s < loop.stage; ++s) loop.workDone += isShearing(scene.stages[s].type) ? 4.0 : 1.0;
+      loop.timestepNoted = history.timestepNoted;
+      summary.notes = history.notes;
+    } catch (const std::exception& e) {
+      summary.status = RunStatus::Failed;
+      summary.refused = true;
+      summary.error = e.what();
+      summary.wallSeconds = since(start);
+      return summary;
+    }
   }
   World& world = context->world();
   summary.particles = world.size();
@@ -235,11 +275,21 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
     return summary;
   }
   observer.onStart(scene, world);
-  LoopState loop;
-  return finish(scene, *context, observer, checkpoint, loop, summary, false, start);
+  if (scene.startFrom) {
+    try {
+      context->sampleSpecimen(observer);  // the series begins where the preparation's ended
+    } catch (const std::exception& e) {
+      summary.status = RunStatus::Failed;
+      summary.error = e.what();
+      observer.onFinish(summary, world);
+      return summary;
+    }
+  }
+  return finish(scene, *context, observer, checkpoint, stageDirectory, loop, summary, false, start);
 }
 
-RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint) {
+RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint,
+                     const std::string& stageDirectory) {
   const auto start = Clock::now();
   RunSummary summary;
   std::string payload;
@@ -276,7 +326,7 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
     summary.refused = true;
     return summary;
   }
-  return finish(scene, *context, observer, policy, loop, summary, true, start);
+  return finish(scene, *context, observer, policy, stageDirectory, loop, summary, true, start);
 }
 
 }  // namespace grainlab

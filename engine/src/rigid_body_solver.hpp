@@ -100,6 +100,8 @@ class RigidBodySolver final : public Solver {
 
   /// Only at the steps where the b2World was rebuilt from its own state.
   bool resumable(std::int64_t steps) const override { return steps % kRebuildEvery == 0; }
+  /// Rebuilds now, out of turn, so the state can be saved at any step.
+  void makeResumable() override { rebuild(); }
   /// Saves its state, or loads it and rebuilds (call at a rebuild step).
   void persist(StateArchive& a, double dt) override;
 

@@ -7,6 +7,7 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/scene.hpp"
 #include "json_reader.hpp"
+#include "start_from_json.hpp"
 
 namespace grainlab {
 namespace {
@@ -242,6 +243,7 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   o.vtk = r.boolean("vtk", o.vtk);
   o.vtkEvery = static_cast<int>(r.integer("vtk_every", o.vtkEvery, 1, 1000000));
   o.checkpointEverySeconds = r.number("checkpoint_every_s", o.checkpointEverySeconds, 0, kInf, true);
+  if (r.has("stage_checkpoints")) o.stageCheckpoints = r.boolean("stage_checkpoints", true);
   r.finish();
   return o;
 }
@@ -306,6 +308,7 @@ Scene parseScene(const nlohmann::json& json) {
   }
   scene.solver = parseSolver(r.raw("solver"));
   scene.output = parseOutput(r.raw("output"));
+  scene.startFrom = parseStartFrom(r.raw("start_from"));
   r.finish();
   return scene;
 }

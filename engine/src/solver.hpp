@@ -47,6 +47,8 @@ class Solver {
 
   /// Whether its state can be saved after `steps` steps.
   virtual bool resumable(std::int64_t steps) const = 0;
+  /// Brings its state to a form persist() can save exactly, now (World::makeResumable).
+  virtual void makeResumable() {}
   /// Saves or loads its own state (World::persist); `dt` is the timestep of the steps to come.
   virtual void persist(StateArchive& a, double dt) = 0;
 };

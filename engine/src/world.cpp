@@ -108,6 +108,10 @@ void World::step() {
 
 bool World::resumable() const { return solver_->resumable(steps_); }
 
+void World::makeResumable() {
+  if (prepared_) solver_->makeResumable();
+}
+
 void World::persist(StateArchive& a) {
   a.section("world");
   a.require(prepared_, "the world must be initialized before its state is loaded");

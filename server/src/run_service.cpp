@@ -185,6 +185,8 @@ std::int64_t RunService::create(const std::string& body) {
 
   // The parser promises SceneError; anything else still means the scene is bad.
   Scene scene = badSceneAs400([&] { return parseScene(sceneJson); }, "(json)");
+  // start_from names a file on this machine: a client may not have the server read one.
+  if (scene.startFrom) throw ApiError(400, "the server does not start runs from a prepared specimen", "start_from");
 
   const int particles = estimateParticles(scene);
   if (particles > options_.maxParticles)

@@ -44,6 +44,11 @@ struct RunSummary {
   int checkpoints = 0;
   double checkpointSeconds = 0;
   std::string checkpointError;
+  /// Of the stage checkpoints (runScene's stageDirectory): how many were written, their
+  /// payload bytes in all, and the wall time spent writing them.
+  int stageCheckpoints = 0;
+  std::uint64_t stageCheckpointBytes = 0;
+  double stageCheckpointSeconds = 0;
   /// resumeRun: said when the newest checkpoint could not be read and the one before it was
   /// used (not part of summary.json: the outputs are the same either way).
   std::string resumeNote;
@@ -84,14 +89,19 @@ class RunObserver {
 ///
 /// With a `checkpoint` path, the run's state is written there every checkpoint.everySeconds of
 /// wall time (at the next step where the world is resumable) and when it stops on request.
+///
+/// With a `stageDirectory`, the run keeps its state at the end of each stage in
+/// stageDirectory/stages/ if the scene keeps them (output.stage_checkpoints), for runs that
+/// start from it (grainlab/prepared_specimen.hpp).
 RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& limits = {},
-                    const CheckpointPolicy& checkpoint = {});
+                    const CheckpointPolicy& checkpoint = {}, const std::string& stageDirectory = {});
 
 /// Continues the run saved in the checkpoint at `path` (its scene is inside it) as if it had
 /// never stopped: the same steps, samples and outputs, bit for bit. Goes on writing
 /// checkpoints to checkpoint.path (usually `path` again) if set. A checkpoint that cannot be
 /// read fails the run with the reason, before onStart or onResume.
-RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint = {});
+RunSummary resumeRun(const std::string& path, RunObserver& observer, const CheckpointPolicy& checkpoint = {},
+                     const std::string& stageDirectory = {});
 /// The scene of the checkpoint that resumeRun(path) would resume (the newest readable one).
 /// Throws CheckpointError if none can be read.
 Scene checkpointScene(const std::string& path);

@@ -95,6 +95,19 @@ struct OutputSpec {
   /// (`grainlab run` and the server do). Writing one takes milliseconds for a few thousand
   /// particles.
   double checkpointEverySeconds = 60;
+  /// output.stage_checkpoints: keep the run's state at the end of each stage, so a later run
+  /// can start from it (grainlab/prepared_specimen.hpp). Unset: on for dem, off for box2d
+  /// (box2d must rebuild its b2World at a stage's end to save it, which changes what follows).
+  std::optional<bool> stageCheckpoints;
+};
+
+/// "start_from": the prepared specimen a run starts from instead of running its own first
+/// stages (grainlab/prepared_specimen.hpp). Either `run` (a run's directory) with `stage`
+/// (empty: the stage before the scene's first shearing stage), or `checkpoint` (a file).
+struct StartFrom {
+  std::string run;
+  std::string stage;
+  std::string checkpoint;
 };
 
 struct Scene {
@@ -109,6 +122,7 @@ struct Scene {
   std::vector<StageSpec> stages;
   SolverSpec solver;
   OutputSpec output;
+  std::optional<StartFrom> startFrom;
 };
 
 /// Throws SceneError(field, reason) for anything malformed, out of range or unknown.

@@ -97,6 +97,11 @@ class World {
   /// its b2World is rebuilt from its own state (RigidBodySolver::kRebuildEvery), since a
   /// b2World's internals (its broad-phase tree, its contact order) cannot be saved.
   bool resumable() const;
+  /// Makes the state savable exactly at this step: nothing for dem; box2d rebuilds its
+  /// b2World from its own state, as it does every kRebuildEvery steps (so the steps that
+  /// follow differ from those of a run that did not call it; a run loaded from the state
+  /// saved now continues exactly as this one does).
+  void makeResumable();
 
   /// Throws SimulationError if any state is non-finite or an overlap has run away (beyond
   /// half of the smaller particle's size), naming the particle and the likely cause.

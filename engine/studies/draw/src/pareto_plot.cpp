@@ -53,6 +53,7 @@ void renderPanel(std::ostringstream& svg, const ParetoPanel& panel, int x0, cons
       tLo = std::min(tLo, p->seconds);
       tHi = std::max(tHi, p->seconds);
       eHi = std::max(eHi, p->error);
+      if (std::isfinite(p->errorHigh)) eHi = std::max(eHi, p->errorHigh);
     }
   }
   // Half a decade of room at either end keeps markers and labels off the frame.
@@ -106,6 +107,12 @@ void renderPanel(std::ostringstream& svg, const ParetoPanel& panel, int x0, cons
       svg << x << "," << y << " ";
     }
     svg << "\"/>\n";
+  }
+  for (const ParetoPoint* p : drawn) {  // intervals first, under the markers
+    if (!std::isfinite(p->errorLow) || !std::isfinite(p->errorHigh)) continue;
+    const double x = sx(std::log10(p->seconds));
+    svg << "<line x1=\"" << x << "\" y1=\"" << sy(std::max(p->errorLow, yAxis.lo)) << "\" x2=\"" << x << "\" y2=\""
+        << sy(p->errorHigh) << "\" stroke=\"" << report::paletteColour(axisIndex(p->axis)) << "\" stroke-width=\"1.5\"/>\n";
   }
   for (const ParetoPoint* p : drawn) {
     const double x = sx(std::log10(p->seconds)), y = sy(p->error);

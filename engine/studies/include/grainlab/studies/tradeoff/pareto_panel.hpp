@@ -13,6 +13,9 @@ struct ParetoPoint {
   std::string label;       ///< short text beside the marker
   std::string axis;        ///< the sweep axis (or "baseline"): sets the colour and the legend entry
   bool onFront = false;    ///< part of the Pareto front
+  /// The error's 95% interval, drawn as a bar through the marker (an ensemble's); NaN: none.
+  double errorLow = std::numeric_limits<double>::quiet_NaN();
+  double errorHigh = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ParetoPanel {

@@ -24,6 +24,9 @@ struct TradeoffOptions {
   /// The cost the Pareto front is taken on: "cpu" (the run's own CPU seconds: its wall time
   /// on an idle core, whatever else the machine runs) or "wall".
   std::string cost = "cpu";
+  /// Seeds per setting: > 0 measures the trade on ensembles (ensemble_tradeoff.hpp) instead of
+  /// one run per setting.
+  int seeds = 0;
 };
 
 /// One setting's cost and errors (those of the run it shares with others, for the baseline).
