@@ -14,6 +14,7 @@
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
 #include "run_command.hpp"
+#include "scene_keys_command.hpp"
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
 #include "tradeoff_command.hpp"
@@ -37,6 +38,7 @@ int usage(std::ostream& out, int code) {
          "                               outputs end as the uninterrupted run's would\n"
          "  presets                      list the presets\n"
          "  columns [--json|--markdown]  series.csv's columns: name, unit, meaning\n"
+         "  scene-keys [--json|--markdown]  every scene key the parser accepts: kind, default, range\n"
          "  check SCENE.json | --preset NAME\n"
          "                               validate a scene and estimate its run (nothing is written)\n"
          "  preset NAME                  print a preset as scene JSON\n"
@@ -119,6 +121,7 @@ int main(int argc, char** argv) {
     if (command == "run") return grainlab::runCommand(args);
     if (command == "resume") return grainlab::resumeCommand(args);
     if (command == "columns") return grainlab::columnsCommand(args);
+    if (command == "scene-keys") return grainlab::sceneKeysCommand(args);
     if (command == "check") return grainlab::checkCommand(args);
     if (command == "presets") {
       for (const std::string& name : grainlab::presetNames()) std::cout << name << "\n";

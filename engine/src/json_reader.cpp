@@ -6,6 +6,8 @@
 namespace grainlab {
 namespace {
 
+thread_local KeyReadSink* keyReadSink = nullptr;
+
 std::string describe(double v) {
   std::ostringstream os;
   os << v;
@@ -13,6 +15,17 @@ std::string describe(double v) {
 }
 
 }  // namespace
+
+KeyReadScope::KeyReadScope(KeyReadSink& sink) : previous_(keyReadSink) { keyReadSink = &sink; }
+KeyReadScope::~KeyReadScope() { keyReadSink = previous_; }
+
+void JsonReader::report(const std::string& key, const char* kind, nlohmann::json fallback, double min, double max,
+                        bool openMin, bool openMax, bool bounded, const std::set<std::string>& choices) const {
+  if (!keyReadSink) return;
+  KeyRead read{fieldPath(key), kind, std::move(fallback), min, max, openMin, openMax, bounded, choices,
+               has(key) ? object_.at(key) : nlohmann::json()};
+  keyReadSink->keyRead(read);
+}
 
 JsonReader::JsonReader(const nlohmann::json& object, std::string path) : object_(object), path_(std::move(path)) {
   if (!object_.is_object()) throw SceneError(path_.empty() ? "(scene)" : path_, "must be a JSON object");
@@ -25,11 +38,13 @@ const nlohmann::json& JsonReader::at(const std::string& key) {
 
 const nlohmann::json& JsonReader::raw(const std::string& key) {
   static const nlohmann::json null;
+  report(key, "raw", nullptr);
   read_.insert(key);
   return has(key) ? object_.at(key) : null;
 }
 
 double JsonReader::number(const std::string& key, double fallback, double min, double max, bool openMin, bool openMax) {
+  report(key, "number", fallback, min, max, openMin, openMax, true);
   if (!has(key)) { read_.insert(key); return fallback; }
   const nlohmann::json& v = at(key);
   if (!v.is_number()) throw SceneError(fieldPath(key), "must be a number");
@@ -46,6 +61,7 @@ double JsonReader::number(const std::string& key, double fallback, double min, d
 }
 
 long long JsonReader::integer(const std::string& key, long long fallback, long long min, long long max) {
+  report(key, "integer", fallback, static_cast<double>(min), static_cast<double>(max), false, false, true);
   if (!has(key)) { read_.insert(key); return fallback; }
   const nlohmann::json& v = at(key);
   if (!v.is_number_integer()) throw SceneError(fieldPath(key), "must be an integer");
@@ -58,6 +74,7 @@ long long JsonReader::integer(const std::string& key, long long fallback, long l
 }
 
 bool JsonReader::boolean(const std::string& key, bool fallback) {
+  report(key, "boolean", fallback);
   if (!has(key)) { read_.insert(key); return fallback; }
   const nlohmann::json& v = at(key);
   if (!v.is_boolean()) throw SceneError(fieldPath(key), "must be true or false");
@@ -65,6 +82,7 @@ bool JsonReader::boolean(const std::string& key, bool fallback) {
 }
 
 std::string JsonReader::string(const std::string& key, const std::string& fallback) {
+  report(key, "string", fallback);
   if (!has(key)) { read_.insert(key); return fallback; }
   const nlohmann::json& v = at(key);
   if (!v.is_string()) throw SceneError(fieldPath(key), "must be a string");
@@ -73,6 +91,7 @@ std::string JsonReader::string(const std::string& key, const std::string& fallba
 
 std::string JsonReader::choice(const std::string& key, const std::string& fallback, const std::set<std::string>& choices) {
   const std::string s = string(key, fallback);
+  report(key, "choice", fallback, 0, 0, false, false, false, choices);
   if (!choices.count(s)) {
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
@@ -82,6 +101,7 @@ std::string JsonReader::choice(const std::string& key, const std::string& fallba
 }
 
 Vec2 JsonReader::vec2(const std::string& key, const Vec2& fallback) {
+  report(key, "vec2", nlohmann::json::array({fallback.x(), fallback.y()}));
   if (!has(key)) { read_.insert(key); return fallback; }
   return parseVec2(at(key), fieldPath(key));
 }

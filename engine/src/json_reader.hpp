@@ -11,6 +11,37 @@
 
 namespace grainlab {
 
+/// One key a JsonReader was asked about, as the scene-key catalogue records it
+/// (engine/src/scene_keys.cpp). `value` is the key's value in the JSON read (null if absent).
+struct KeyRead {
+  std::string path;  ///< the key's full path, e.g. "stages[2].strain_rate"
+  std::string kind;  ///< number, integer, boolean, string, choice, vec2 or raw
+  nlohmann::json fallback;
+  double min = 0, max = 0;
+  bool openMin = false, openMax = false, bounded = false;
+  std::set<std::string> choices;
+  nlohmann::json value;
+};
+
+/// Receives every key every JsonReader on this thread reads while a KeyReadScope is alive.
+class KeyReadSink {
+ public:
+  virtual ~KeyReadSink() = default;
+  virtual void keyRead(const KeyRead& read) = 0;
+};
+
+/// While alive, reports the keys read on this thread to `sink` (parsing only: no run reads keys).
+class KeyReadScope {
+ public:
+  explicit KeyReadScope(KeyReadSink& sink);
+  ~KeyReadScope();
+  KeyReadScope(const KeyReadScope&) = delete;
+  KeyReadScope& operator=(const KeyReadScope&) = delete;
+
+ private:
+  KeyReadSink* previous_;
+};
+
 class JsonReader {
  public:
   JsonReader(const nlohmann::json& object, std::string path);
@@ -35,6 +66,9 @@ class JsonReader {
 
  private:
   const nlohmann::json& at(const std::string& key);
+  void report(const std::string& key, const char* kind, nlohmann::json fallback, double min = 0, double max = 0,
+              bool openMin = false, bool openMax = false, bool bounded = false,
+              const std::set<std::string>& choices = {}) const;
   const nlohmann::json& object_;
   std::string path_;
   std::set<std::string> read_;
