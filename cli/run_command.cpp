@@ -104,7 +104,8 @@ int runCommand(const std::vector<std::string>& args) {
     return failedWriting(e, out);
   }
   if (summary.refused) {
-    std::cerr << "error: " << summary.error << " (grainlab run --force runs it anyway)\n";
+    std::cerr << "error: " << summary.error << (summary.refusedInvalid ? "" : " (grainlab run --force runs it anyway)")
+              << "\n";
     return 2;
   }
   return report(summary, output, out);

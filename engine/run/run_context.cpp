@@ -11,7 +11,7 @@
 
 namespace grainlab {
 
-RunContext::RunContext(const Scene& scene) : scene_(scene) {
+RunContext::RunContext(const Scene& scene) : scene_(scene), monitor_(scene) {
   WorldSettings settings;
   settings.threads = scene.solver.threads;
   if (scene.solver.engine == SolverSpec::Engine::Box2d) {
@@ -54,6 +54,7 @@ Stage& RunContext::beginStage(size_t index) {
     sampler_->resetStrainReference();
   }
   stage_ = makeStage(spec, scene_.output, *world_, membrane_.get());
+  stageStartSample_ = true;
   nextSample_ = stage_->sampleCoordinate() + stage_->sampleSpacing();
   return *stage_;
 }
@@ -77,6 +78,7 @@ void RunContext::persist(StateArchive& a) {
   world_->persist(a);
   if (membrane_) membrane_->persist(a);
   sampler_->persist(a);
+  monitor_.persist(a);
   if (a.loading()) {
     // As beginStage, without what it resets: friction, strain references and the next
     // sample come from the checkpoint.
@@ -97,6 +99,8 @@ void RunContext::sample(RunObserver& observer) {
   const auto t0 = std::chrono::steady_clock::now();
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
   sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  monitor_.observe(s, *world_, stageIndex_, stageStartSample_);
+  stageStartSample_ = false;
   observer.onSample(s, *world_);
   // The next multiple of the spacing past where the stage is: computed, not stepped to, so
   // a spacing too small to change a large coordinate cannot loop forever.

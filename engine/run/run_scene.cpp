@@ -1,6 +1,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -155,8 +156,12 @@ RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer
     RunLoop(scene, context, observer, policy, start).run(loop, summary, resumed);
   } catch (const std::exception& e) {
     summary.status = RunStatus::Failed;
-    summary.error = e.what();
+    // A run that fails for physical reasons names the scene field most likely responsible;
+    // the engine's own reason follows.
+    const std::string cause = likelyCause(scene, world);
+    summary.error = cause.empty() ? e.what() : cause + "; the run stopped: " + e.what();
   }
+  summary.warnings = context.runWarnings();
   summary.steps = world.stepCount();
   summary.particles = world.size();
   summary.peakPhiMobDeg = context.peakPhiMobDeg();
@@ -223,6 +228,17 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   summary.particles = world.size();
   const RunCost cost = estimateRunCost(scene, world);
   observer.onEstimate(cost);
+  // The validity envelope: refused past a hard limit, naming the field; warned past a soft one.
+  const ValidityAssessment validity = assessValidity(scene, world, cost, std::numeric_limits<double>::infinity());
+  if (!validity.refusals.empty()) {
+    summary.status = RunStatus::Failed;
+    summary.refused = summary.refusedInvalid = true;
+    summary.error = validity.refusalMessage();
+    summary.wallSeconds = since(start);
+    return summary;
+  }
+  context->addWarnings(validity.warnings);  // kept with the run's state: a resumed run has them
+  observer.onWarnings(validity.warnings);
   if (cost.certainSeconds() > limits.maxSeconds) {
     std::ostringstream os;
     os << cost.field << ": the run would take about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()
