@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "grainlab/errors.hpp"
 #include "grainlab/membrane.hpp"
 #include "grainlab/specimen.hpp"
 #include "grainlab/stages.hpp"
@@ -33,7 +34,13 @@ RunContext::RunContext(const Scene& scene) : scene_(scene), monitor_(scene) {
   world_->setGravity(scene.gravity);
   world_->setTimestepSafety(scene.solver.timestepSafety);
   if (scene.solver.timestep > 0) world_->setTimestep(scene.solver.timestep);
-  world_->initialize();  // contacts exist before the first sample checks them
+  try {
+    world_->initialize();  // contacts exist before the first sample checks them
+  } catch (const SimulationError& e) {
+    // Over the critical timestep: the field is the timestep the scene gives.
+    if (scene.solver.timestep > 0) throw SceneError("solver.timestep", e.what());
+    throw;
+  }
   if (scene.boundary.type == BoundarySpec::Type::Membrane) membrane_ = std::make_unique<Membrane>(*world_);
   sampler_ = std::make_unique<Sampler>(scene.output, *world_, membrane_.get());
 }

@@ -217,8 +217,20 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   const auto start = Clock::now();
   RunSummary summary;
   std::unique_ptr<RunContext> context;
+  // Refused by field: past a hard limit of what the scene alone decides, or unbuildable.
+  auto refuse = [&](const std::string& why) {
+    summary.status = RunStatus::Failed;
+    summary.refused = summary.refusedInvalid = true;
+    summary.error = why;
+    summary.wallSeconds = since(start);
+    return summary;
+  };
+  if (const ValidityAssessment alone = assessSceneAlone(scene); !alone.refusals.empty())
+    return refuse(alone.refusalMessage());
   try {
     context = std::make_unique<RunContext>(scene);
+  } catch (const SceneError& e) {
+    return refuse(e.field() + ": " + e.reason());
   } catch (const std::exception& e) {
     summary.status = RunStatus::Failed;
     summary.error = e.what();
@@ -230,13 +242,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   observer.onEstimate(cost);
   // The validity envelope: refused past a hard limit, naming the field; warned past a soft one.
   const ValidityAssessment validity = assessValidity(scene, world, cost, std::numeric_limits<double>::infinity());
-  if (!validity.refusals.empty()) {
-    summary.status = RunStatus::Failed;
-    summary.refused = summary.refusedInvalid = true;
-    summary.error = validity.refusalMessage();
-    summary.wallSeconds = since(start);
-    return summary;
-  }
+  if (!validity.refusals.empty()) return refuse(validity.refusalMessage());
   context->addWarnings(validity.warnings);  // kept with the run's state: a resumed run has them
   observer.onWarnings(validity.warnings);
   if (cost.certainSeconds() > limits.maxSeconds) {

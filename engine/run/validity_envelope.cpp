@@ -145,6 +145,64 @@ class Envelope {
   ValidityWarning worst_;
 };
 
+// A particle's size as the scene gives it: a disc's radius, a polygon's bounding radius.
+double givenSize(const ParticleSpec& p) {
+  if (p.shape == ShapeKind::Disc) return p.radius;
+  double r = 0;
+  for (const Vec2& v : p.vertices) r = std::max(r, v.norm());
+  return r;
+}
+
+// The quantities the scene alone decides, checked before the world is built (a specimen of
+// 1e300 m grains, or a ring of 1e-300 m discs, cannot be built to be measured).
+void assessAlone(const Scene& scene, Envelope& envelope) {
+  if (scene.assembly) {
+    const SpecimenRecipe& a = *scene.assembly;
+    // The grains' equal-area diameter: a disc's, or for the elongated polygons L/√aspect
+    // (an ellipse of axes L and L/aspect), averaged over the size classes.
+    double d = 2 * a.discRadius, smallestWidth = 2 * a.discRadius;
+    if (a.shape == SpecimenRecipe::Shape::Elongated && !a.longAxes.empty()) {
+      d = 0;
+      smallestWidth = kInf;
+      for (double l : a.longAxes) {
+        d += l / std::sqrt(a.aspectRatio) / static_cast<double>(a.longAxes.size());
+        smallestWidth = std::min(smallestWidth, l / a.aspectRatio);
+      }
+    }
+    const double across = a.specimenDiameter / d;
+    std::vector<Driver> drivers{{"assembly.specimen_diameter", a.specimenDiameter, reference::kSpecimenDiameter, -1}};
+    for (const Driver& p : particleSizeDrivers(scene, 1)) drivers.push_back(p);
+    envelope.check("particles_across", across, drivingField(drivers),
+                   g(across) + " particles of " + g(1e3 * d) + " mm across a " + g(1e3 * a.specimenDiameter) +
+                       " mm specimen");
+    if (a.boundaryRadius > 0) {
+      const double automatic = 0.5 * smallestWidth;
+      const double ratio = std::max(a.boundaryRadius / automatic, automatic / a.boundaryRadius);
+      envelope.check("boundary_particle_ratio", ratio, "assembly.boundary_radius",
+                     "ring discs of " + g(1e3 * a.boundaryRadius) + " mm beside the automatic " +
+                         g(1e3 * automatic) + " mm (half the narrowest grain)");
+    }
+  }
+  // Explicit particles: the spread of their sizes, blamed on the one furthest (in log) from
+  // the median size.
+  if (scene.particles.size() > 1) {
+    std::vector<double> sizes;
+    for (const ParticleSpec& p : scene.particles) sizes.push_back(givenSize(p));
+    std::vector<double> sorted = sizes;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    size_t odd = 0;
+    for (size_t k = 0; k < sizes.size(); ++k)
+      if (std::abs(std::log(sizes[k] / median)) > std::abs(std::log(sizes[odd] / median))) odd = k;
+    const auto [smallest, largest] = std::minmax_element(sizes.begin(), sizes.end());
+    const double spread = *largest / *smallest;
+    envelope.check("size_ratio", spread,
+                   "particles[" + std::to_string(odd) + "]." +
+                       (scene.particles[odd].shape == ShapeKind::Disc ? "radius" : "vertices"),
+                   "the largest particle is " + g(spread) + " times the smallest");
+  }
+}
+
 void assess(const Scene& scene, const World& world, const RunCost* cost, double maxSeconds, Envelope& envelope) {
   const double d = meanDiameter(world);
   const double dt = world.timestep();
@@ -152,15 +210,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
   const double rho = scene.material.density;
   const double specimenRadius = scene.assembly ? scene.assembly->specimenDiameter / 2 : 0;
 
-  if (scene.assembly && d > 0) {
-    const double across = scene.assembly->specimenDiameter / d;
-    std::vector<Driver> drivers{{"assembly.specimen_diameter", scene.assembly->specimenDiameter,
-                                 reference::kSpecimenDiameter, -1}};
-    for (const Driver& p : particleSizeDrivers(scene, 1)) drivers.push_back(p);
-    envelope.check("particles_across", across, drivingField(drivers),
-                   g(across) + " particles of " + g(1e3 * d) + " mm across a " +
-                       g(1e3 * scene.assembly->specimenDiameter) + " mm specimen");
-  }
+  assessAlone(scene, envelope);
 
   // Explicit particles as given: how deep they start in each other, how fast they start.
   const int explicitCount = static_cast<int>(scene.particles.size());
@@ -263,11 +313,14 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       const double degPerSecond = std::abs(s.rotationRateDeg);
       // Whichever two of rate, total and duration the scene gave: the one furthest from its
       // reference is the likelier slip.
-      std::vector<Driver> rotation{{stageField(k, "total_rotation_deg"), std::abs(s.rotationRateDeg * s.duration),
-                                    reference::kTotalRotationDeg, 1},
-                                   {stageField(k, "rotation_rate_deg_per_s"), degPerSecond,
-                                    reference::kRotationRateDeg, 1},
-                                   {stageField(k, "duration"), s.duration, reference::kRotationDuration, -1}};
+      std::vector<Driver> rotation;
+      for (const Driver& d : std::initializer_list<Driver>{
+               {"total_rotation_deg", std::abs(s.rotationRateDeg * s.duration), reference::kTotalRotationDeg, 1},
+               {"rotation_rate_deg_per_s", degPerSecond, reference::kRotationRateDeg, 1},
+               {"duration", s.duration, reference::kRotationDuration, -1}}) {
+        // Only the two fields the scene gave can be to blame.
+        if (d.field != s.rotationDerivedField) rotation.push_back({stageField(k, d.field.c_str()), d.value, d.reference, d.power});
+      }
       std::vector<Driver> perStepDrivers = rotation;
       for (const Driver& t : timestepDrivers(scene, 1)) perStepDrivers.push_back(t);
       const double perStep = degPerSecond * dt;
@@ -287,12 +340,29 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
   if (cost) {
     const double seconds = cost->certainSeconds();
     std::vector<Driver> drivers = timestepDrivers(scene, -1);
-    // The run's length: the stage asking for the most simulated time (RunCost's field).
-    drivers.push_back({"(stage length)", cost->certainTime, reference::kSimulatedTime, 1});
     if (scene.assembly)
       drivers.push_back({"assembly.specimen_diameter", scene.assembly->specimenDiameter, reference::kSpecimenDiameter, 2});
+    // The run's length: the stage asking for the most simulated time (RunCost's field), by
+    // its rate (slower is longer) and the path it travels.
+    const std::string lengthField = runCostField(cost->field);
+    const size_t open = lengthField.find('['), close = lengthField.find(']');
+    if (open != std::string::npos && close != std::string::npos) {
+      const size_t k = std::stoul(lengthField.substr(open + 1, close - open - 1));
+      const StageSpec& s = scene.stages.at(k);
+      const auto [rate, rateField] = principalRate(s, k);
+      if (rate > 0) drivers.push_back({rateField, rate, reference::kRate, -1});
+      if (s.type == StageSpec::Type::Cyclic) drivers.push_back({stageField(k, "cycles"), double(s.cycles), 3, 1});
+      if (s.type == StageSpec::Type::Biaxial)
+        drivers.push_back({stageField(k, "target_axial_strain"), s.targetAxialStrain, 0.2, 1});
+      if (s.type == StageSpec::Type::SimpleShear)
+        drivers.push_back({stageField(k, "target_shear_strain"), s.targetShearStrain, 0.3, 1});
+      if (s.type == StageSpec::Type::Free || s.type == StageSpec::Type::Rotation)
+        drivers.push_back({stageField(k, "duration"), s.duration, reference::kRotationDuration, 1});
+      if (lengthField.find("max_time") != std::string::npos)
+        drivers.push_back({lengthField, s.maxTime, reference::kSimulatedTime, 1});
+    }
     std::string field = drivingField(drivers);
-    if (field == "(stage length)") field = runCostField(cost->field);
+    if (field.empty()) field = lengthField;
     // The soft limit on what it may take (criterion stages to their time limits), the hard
     // one (the caller's) on what it takes at least.
     const double most = cost->mostSeconds();
@@ -308,6 +378,13 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
 
 }  // namespace
 
+ValidityAssessment assessSceneAlone(const Scene& scene) {
+  ValidityAssessment out;
+  Envelope envelope(out);
+  assessAlone(scene, envelope);
+  return out;
+}
+
 ValidityAssessment assessValidity(const Scene& scene, const World& world, const RunCost& cost, double maxSeconds) {
   ValidityAssessment out;
   out.cost = cost;
@@ -317,6 +394,8 @@ ValidityAssessment assessValidity(const Scene& scene, const World& world, const 
 }
 
 ValidityAssessment assessSceneValidity(const Scene& scene, double maxSeconds) {
+  // What the scene alone decides first: such a scene may not even build.
+  if (ValidityAssessment alone = assessSceneAlone(scene); !alone.refusals.empty()) return alone;
   RunContext context(scene);
   return assessValidity(scene, context.world(), estimateRunCost(scene, context.world()), maxSeconds);
 }

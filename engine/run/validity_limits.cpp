@@ -43,6 +43,16 @@ const std::vector<ValidityQuantity>& validityQuantities() {
       {"particles_across", "", false, 10, 5, "specimen diameter over the mean particle diameter",
        "under 10 across, the one-particle boundary layer at each side is over a fifth of the specimen",
        "under 5 across there is no interior: the specimen is its boundary"},
+      {"boundary_particle_ratio", "", true, 3, 10,
+       "assembly.boundary_radius against the automatic one (half the narrowest grain), whichever is larger "
+       "over the other",
+       "3 times off, the ring touches the specimen at another scale than the grains': the membrane is no longer "
+       "grain-scale",
+       "10 times off, grains pass between the ring's discs (larger) or the ring outnumbers its specimen (smaller)"},
+      {"size_ratio", "", true, 10, 1000, "the largest explicit particle's size over the smallest's",
+       "over 10 the smallest particles set a timestep 10 times shorter than the others need",
+       "over 1000 the smallest particles are not resolved by the contacts of the others (and cost 1000 times "
+       "more steps)"},
       {"timestep_ratio", "", true, 0.3, 1.0, "timestep over the single-contact critical timestep 2√(m/2k)",
        "above 0.3 a particle with 6 or more contacts is past its own stability bound and can gain energy",
        "above 1 explicit integration of one contact is unstable"},

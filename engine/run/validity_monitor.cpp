@@ -35,11 +35,25 @@ void ValidityMonitor::record(const std::string& quantity, double value, const st
   const ValidityQuantity& q = validityQuantity(quantity);
   auto past = [&](double limit) { return q.upper ? value > limit : value < limit; };
   for (const auto& [level, limit, reason] : {std::tuple{"soft", q.soft, &q.softReason}, {"hard", q.hard, &q.hardReason}}) {
-    if (!past(limit)) continue;
     const std::string key = quantity + " " + level;
     if (std::count(crossed_.begin(), crossed_.end(), key)) continue;
+    const auto at = std::find(pendingKey_.begin(), pendingKey_.end(), key);
+    const size_t k = static_cast<size_t>(at - pendingKey_.begin());
+    if (!past(limit)) {  // back inside: a crossing under way was a transient
+      if (at != pendingKey_.end()) pendingSamples_[k] = 0;
+      continue;
+    }
+    if (at == pendingKey_.end()) {
+      pendingKey_.push_back(key);
+      pending_.push_back({});
+      pendingSamples_.push_back(0);
+    }
+    // The crossing is reported from its first sample.
+    if (pendingSamples_[k]++ == 0)
+      pending_[k] = {field, quantity, value, limit, "measured: " + meaning + " (" + *reason + ")", step};
+    if (pendingSamples_[k] < kCrossingSamples) continue;
     crossed_.push_back(key);
-    warnings_.push_back({field, quantity, value, limit, "measured: " + meaning + " (" + *reason + ")", step});
+    warnings_.push_back(pending_[k]);
   }
 }
 
@@ -83,14 +97,14 @@ void ValidityMonitor::observe(const Sample& sample, const World& world, size_t s
   }
 }
 
-void ValidityMonitor::persist(StateArchive& a) {
-  a.section("validity monitor");
-  a(crossed_);
-  std::uint64_t n = warnings_.size();
+namespace {
+
+void persistWarnings(StateArchive& a, std::vector<ValidityWarning>& warnings) {
+  std::uint64_t n = warnings.size();
   a(n);
   a.require(n <= 100 * validityQuantities().size(), "the validity monitor has " + std::to_string(n) + " warnings");
-  if (a.loading()) warnings_.resize(n);
-  for (ValidityWarning& w : warnings_) {
+  if (a.loading()) warnings.resize(n);
+  for (ValidityWarning& w : warnings) {
     a(w.field);
     a(w.quantity);
     a(w.value);
@@ -98,6 +112,19 @@ void ValidityMonitor::persist(StateArchive& a) {
     a(w.meaning);
     a(w.step);
   }
+}
+
+}  // namespace
+
+void ValidityMonitor::persist(StateArchive& a) {
+  a.section("validity monitor");
+  a(crossed_);
+  persistWarnings(a, warnings_);
+  a(pendingKey_);
+  persistWarnings(a, pending_);
+  a(pendingSamples_);
+  a.require(pending_.size() == pendingKey_.size() && pendingSamples_.size() == pendingKey_.size(),
+            "the validity monitor's crossings under way do not match");
 }
 
 }  // namespace grainlab

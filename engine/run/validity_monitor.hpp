@@ -5,6 +5,9 @@
 // recorded as a warning with its step. It reads the sample and the world; it never changes
 // the simulation.
 #include <string>
+
+// A limit counts as crossed once the measured quantity stays past it for this many samples
+// in a row: one sample past it can be a servo's transient (a stage's first steps).
 #include <vector>
 
 #include "grainlab/contact.hpp"
@@ -13,6 +16,8 @@
 #include "grainlab/validity.hpp"
 
 namespace grainlab {
+
+inline constexpr int kCrossingSamples = 3;
 
 class ValidityMonitor {
  public:
@@ -31,6 +36,10 @@ class ValidityMonitor {
   std::vector<ContactRecord> contacts_;
   std::vector<ValidityWarning> warnings_;
   std::vector<std::string> crossed_;  // "quantity soft" / "quantity hard": recorded already
+  // A crossing under way but not yet kCrossingSamples long: its key, first sample and run length.
+  std::vector<std::string> pendingKey_;
+  std::vector<ValidityWarning> pending_;
+  std::vector<int> pendingSamples_;
 };
 
 }  // namespace grainlab

@@ -50,6 +50,9 @@ struct ValidityAssessment {
   std::string refusalMessage() const;
 };
 
+/// The quantities the scene alone decides (particles across the specimen, the ring's disc
+/// size, the spread of explicit particle sizes), before the world is built.
+ValidityAssessment assessSceneAlone(const Scene& scene);
 /// The envelope of `scene` on `world` (built from it, not yet stepped), with its cost.
 /// `maxSeconds`: the cost's hard limit (RunLimits::maxSeconds; infinite: none).
 ValidityAssessment assessValidity(const Scene& scene, const World& world, const RunCost& cost, double maxSeconds);
