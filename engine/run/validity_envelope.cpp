@@ -404,8 +404,8 @@ std::string likelyCause(const Scene& scene, const World& world) {
   ValidityAssessment ignored;
   Envelope envelope(ignored);
   assess(scene, world, nullptr, std::numeric_limits<double>::infinity(), envelope);
-  // Well inside every limit: nothing in the scene stands out.
-  if (!(envelope.worstRatio() > 0.1)) return {};
+  // Less than halfway to every soft limit: nothing in the scene stands out.
+  if (!(envelope.worstRatio() > 0.5)) return {};
   const ValidityWarning& w = envelope.worst();
   return w.field + " (" + w.quantity + " " + g(w.value) + " against its limit " + g(w.limit) + ": " + w.meaning + ")";
 }
