@@ -1,4 +1,5 @@
 // build/grainlab: the command line of contracts.md.
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -53,7 +54,9 @@ int usage(std::ostream& out, int code) {
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
          "        [--max-run-seconds S]   refuse scenes estimated to run longer, stop runs that do (default 86400)\n"
          "        [--resume-interrupted]  resume the runs a stopped or killed server left interrupted\n"
-         "                               the HTTP/WebSocket server and dashboard\n"
+         "        [--token-file FILE] [--read-only-token-file FILE]  (or GRAINLAB_TOKEN, GRAINLAB_READ_ONLY_TOKEN)\n"
+         "        [--allowed-hosts H1,H2] [--allowed-origins O1,O2] [--import-root DIR]\n"
+         "                               the HTTP/WebSocket server and dashboard (docs/security.md)\n"
          "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif
          "  help                         this text\n";
@@ -61,6 +64,17 @@ int usage(std::ostream& out, int code) {
 }
 
 #ifdef GRAINLAB_HAS_SERVER
+std::vector<std::string> commaList(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto comma = std::min(text.find(',', start), text.size());
+    if (comma > start) items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
 int serveCommand(const std::vector<std::string>& args) {
   grainlab::server::ServeOptions options;
   for (size_t k = 0; k < args.size(); ++k) {
@@ -75,6 +89,18 @@ int serveCommand(const std::vector<std::string>& args) {
     else if (args[k] == "--max-run-seconds" && hasValue) options.maxRunSeconds = std::stod(args[++k]);
     else if (args[k] == "--resume-interrupted") options.resumeInterrupted = true;
     else if (args[k] == "--max-body" && hasValue) options.maxBodyBytes = std::stoul(args[++k]);
+    else if (args[k] == "--token-file" && hasValue) options.tokenFile = args[++k];
+    else if (args[k] == "--read-only-token-file" && hasValue) options.readOnlyTokenFile = args[++k];
+    else if (args[k] == "--allowed-hosts" && hasValue) options.allowedHosts = commaList(args[++k]);
+    else if (args[k] == "--allowed-origins" && hasValue) options.allowedOrigins = commaList(args[++k]);
+    else if (args[k] == "--import-root" && hasValue) options.importRoot = args[++k];
+    else if (args[k] == "--token" || args[k] == "--read-only-token") {
+      // Every user of the machine sees a command line (ps); a file or the environment they do not.
+      std::cerr << "grainlab serve: " << args[k] << " is not taken on the command line, where other users see it; "
+                << "use " << args[k] << "-file FILE or the environment variable "
+                << (args[k] == "--token" ? "GRAINLAB_TOKEN" : "GRAINLAB_READ_ONLY_TOKEN") << "\n";
+      return 2;
+    }
     else {
       std::cerr << "grainlab serve: unexpected argument " << args[k] << "\n";
       return usage(std::cerr, 2);

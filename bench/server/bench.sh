@@ -29,7 +29,7 @@ BASE=http://127.0.0.1:$PORT
 
 # Something to list: 20 finished runs of a small scene.
 SCENE='{"name":"bench","particles":[{"shape":"disc","radius":0.002,"position":[0,0]}],"stages":[{"type":"free","duration":0.002}],"output":{"sample_interval":0.0002}}'
-for _ in $(seq 20); do curl -sf -X POST "$BASE/api/runs" --data "$SCENE" >/dev/null; done
+for _ in $(seq 20); do curl -sf -X POST -H "Content-Type: application/json" "$BASE/api/runs" --data "$SCENE" >/dev/null; done
 for _ in $(seq 200); do
   curl -s "$BASE/api/health" | grep -q '"queued":0,"running":0' && break
   sleep 0.1

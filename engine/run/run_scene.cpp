@@ -247,7 +247,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   observer.onWarnings(validity.warnings);
   if (cost.certainSeconds() > limits.maxSeconds) {
     std::ostringstream os;
-    os << cost.field << ": the run would take about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()
+    os << cost.field << ": the run would take at least about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()
        << "), more than the limit of " << humanDuration(limits.maxSeconds) << "; change " << cost.field
        << ", or raise the limit if you mean it";
     summary.status = RunStatus::Failed;

@@ -1,6 +1,10 @@
 """grainlab from Python: run scenes in-process, read their results as numpy arrays, apply
 grainlab's micromechanical analysis to any contact table, and drive a grainlab server.
 See docs/python.md."""
+from ._interpreter import check as _check_interpreter
+
+_check_interpreter()
+
 from ._errors import SceneError
 from ._scene import presets, preset, validate
 from ._run import Run, run

@@ -2,6 +2,8 @@
 import os
 import sys
 
+import numpy as np
+
 from . import _grainlab
 from ._scene import scene_text
 from ._tables import from_columns, read_csv, series_array
@@ -56,6 +58,29 @@ class Run:
         """The final contacts: i, j, px, py, nx, ny, fn, ft, lix, liy, ljx, ljy (contracts.md);
         a wall contact has j < 0 and NaN for ljx, ljy."""
         return self._contacts
+
+    def histograms(self, quantity=None, sample=None):
+        """The rose data of histograms.csv (written when the scene's output.histograms is true,
+        the default, and the run has an output directory): a structured array with columns
+        stage, sample, quantity, bin, value. ``sample`` k is row k of ``series``; bin b covers
+        [b, b + 1) · 180°/bins. Quantities: count, density, fn, ft, ln, lt and their fits
+        density_fit, ..., lt_fit at the bin centres (docs/micromechanics.md). ``quantity`` and
+        ``sample`` (a row index; -1 for the last sample with contacts) select rows."""
+        if self.out is None:
+            raise ValueError("Run.histograms: this run kept no files; run it with out=DIR "
+                             "(grainlab.run(scene, out=DIR)) to keep histograms.csv")
+        path = os.path.join(self.out, "histograms.csv")
+        if not os.path.exists(path):
+            raise FileNotFoundError(f"{path}: no histograms (the scene's output.histograms is false?)")
+        table = read_csv(path)
+        if quantity is not None:
+            table = table[np.asarray(table["quantity"]) == quantity]
+        if sample is not None:
+            samples = table["sample"]
+            if sample < 0 and len(samples):
+                sample = np.unique(samples)[sample]
+            table = table[samples == sample]
+        return table
 
     def __repr__(self):
         return (f"<grainlab.Run {self.status}: {len(self.series)} samples, "

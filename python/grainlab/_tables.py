@@ -6,8 +6,8 @@ import math
 import numpy as np
 
 # Integer and text columns; every other column is float64 (NaN where the CSV cell is empty).
-_INTEGER = {"step", "id", "i", "j", "boundary"}
-_TEXT = {"stage", "shape"}
+_INTEGER = {"step", "id", "i", "j", "boundary", "sample", "bin"}
+_TEXT = {"stage", "shape", "quantity"}
 
 
 def _dtype(names, text_width):
@@ -47,7 +47,8 @@ def series_array(columns, stages, values):
 
 
 def read_csv(path):
-    """A CSV (a path or an open text file) written by grainlab (series.csv, particles_final.csv, contacts_final.csv) as a
+    """A CSV (a path or an open text file) written by grainlab (series.csv, particles_final.csv, contacts_final.csv,
+    histograms.csv) as a
     structured array. Empty cells (values not measured, a wall's lj) become NaN."""
     if hasattr(path, "read"):
         rows = list(csv.reader(path))

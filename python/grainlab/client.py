@@ -1,6 +1,7 @@
 """grainlab.Client: the server's REST API (docs/http-api.md) with the standard library only."""
 import io
 import json
+import os
 import time
 import urllib.error
 import urllib.request
@@ -19,16 +20,27 @@ class ServerError(RuntimeError):
 
 
 class Client:
-    """A grainlab server at ``url`` (for example "http://127.0.0.1:8080")."""
+    """A grainlab server at ``url`` (for example "http://127.0.0.1:8080").
 
-    def __init__(self, url="http://127.0.0.1:8080", timeout=30.0):
+    ``token``: the server's token (the ``token=`` of the login URL ``grainlab serve`` prints),
+    sent as ``Authorization: Bearer``; by default the environment variable GRAINLAB_TOKEN, if
+    set. A server on loopback started without a token needs none (docs/security.md)."""
+
+    def __init__(self, url="http://127.0.0.1:8080", timeout=30.0, token=None):
         self.url = url.rstrip("/")
         self.timeout = timeout
+        self._token = token if token is not None else os.environ.get("GRAINLAB_TOKEN") or None
+
+    def __repr__(self):
+        # Never the token: a repr ends up in logs and notebooks.
+        return f"Client({self.url!r})"
 
     def _request(self, method, path, body=None):
         data = None if body is None else json.dumps(body, allow_nan=False).encode()
-        request = urllib.request.Request(self.url + path, data=data, method=method,
-                                         headers={"Content-Type": "application/json"} if data else {})
+        headers = {"Content-Type": "application/json"} if data else {}
+        if self._token:
+            headers["Authorization"] = f"Bearer {self._token}"
+        request = urllib.request.Request(self.url + path, data=data, method=method, headers=headers)
         try:
             with urllib.request.urlopen(request, timeout=self.timeout) as response:
                 return response.read()

@@ -4,6 +4,7 @@
 // fuzzer call its router directly.
 #include <memory>
 
+#include "access_tokens.hpp"
 #include "grainlab/server/serve.hpp"
 
 namespace grainlab::server {
@@ -12,11 +13,13 @@ class Repository;
 class StreamHub;
 class RunService;
 class Router;
+class AccessPolicy;
 
 class Application {
  public:
   /// Opens the database (creating it), marking runs left unfinished as interrupted.
-  explicit Application(const ServeOptions& options);
+  /// `tokens`: none on loopback, as the tests and the fuzzer run it by default.
+  explicit Application(const ServeOptions& options, const AccessTokens& tokens = {});
   /// Stops the runs and flushes the database.
   ~Application();
   Application(const Application&) = delete;
@@ -27,6 +30,8 @@ class Application {
   StreamHub& hub() { return *hub_; }
   RunService& runs() { return *service_; }
   Router& router() { return *router_; }
+  /// Host, Origin, token and content-type checks before the routes (access_policy.hpp).
+  AccessPolicy& access() { return *access_; }
   /// Stops the runs (they end `interrupted`) and waits for their records; idempotent.
   void shutdown();
 
@@ -36,6 +41,7 @@ class Application {
   std::unique_ptr<StreamHub> hub_;
   std::unique_ptr<RunService> service_;
   std::unique_ptr<Router> router_;
+  std::unique_ptr<AccessPolicy> access_;
 };
 
 }  // namespace grainlab::server

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "access_policy.hpp"
 #include "application.hpp"
 #include "router.hpp"
 #include "run_service.hpp"
@@ -36,6 +37,20 @@ void HttpSession::doRead() {
 void HttpSession::onHeader(beast::error_code ec, std::size_t) {
   if (refused(ec)) return;
   const auto& request = parser_->get();
+  // Who may ask, decided on the headers alone, before any body is read.
+  beast::error_code peerError;
+  const auto peer = stream_.socket().remote_endpoint(peerError).address().to_string();
+  AccessRequest access{request.method_string(), request.target(), request[http::field::host],
+                       request[http::field::origin], request[http::field::content_type],
+                       request[http::field::authorization], request[http::field::cookie], peer,
+                       websocket::is_upgrade(request), !parser_->is_done()};
+  if (auto answer = app_.access().check(access)) {
+    answer->headOnly = request.method() == http::verb::head;
+    // A body we will not read: answer, then swallow it and close.
+    drainAfterWrite_ = !parser_->is_done();
+    send(*answer, request.version(), request.keep_alive() && parser_->is_done());
+    return;
+  }
   if (!parser_->is_done() && beast::iequals(request[http::field::expect], "100-continue")) {
     // curl waits a second for this before sending a large body.
     auto res = std::make_shared<http::response<http::empty_body>>(http::status::continue_, request.version());

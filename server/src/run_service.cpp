@@ -18,6 +18,7 @@
 #include "grainlab/thread_cpu_clock.hpp"
 #include "grainlab/validity.hpp"
 #include "api_types.hpp"
+#include "import_root.hpp"
 #include "live_run.hpp"
 #include "outgoing.hpp"
 #include "repository.hpp"
@@ -625,8 +626,13 @@ nlohmann::json RunService::importSweep(const std::string& body) {
   }
   if (!request.is_object() || !request.contains("dir") || !request["dir"].is_string())
     throw ApiError(400, "give the sweep folder's path on the server's machine as a string", "dir");
+  // Off unless a root was given; outside it, one answer for every path, existing or not.
+  if (options_.importRoot.empty())
+    throw ApiError(404, "importing sweeps is off on this server (start it with --import-root DIR)", "dir");
+  const auto dir = underImportRoot(options_.importRoot, request["dir"].get<std::string>());
+  if (!dir) throw ApiError(403, "dir must be a folder under this server's import root", "dir");
   try {
-    const SweepImport outcome = server::importSweep(repo_, request["dir"].get<std::string>());
+    const SweepImport outcome = server::importSweep(repo_, *dir);
     return {{"imported", outcome.ids.size()}, {"ids", outcome.ids}, {"already_there", outcome.alreadyThere},
             {"not_finished", outcome.notFinished}};
   } catch (const std::invalid_argument& e) {

@@ -4,10 +4,13 @@
 
 #include <boost/asio/signal_set.hpp>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 #include <vector>
 
+#include "access_policy.hpp"
+#include "access_tokens.hpp"
 #include "application.hpp"
 #include "listener.hpp"
 #include "stream_hub.hpp"
@@ -21,9 +24,16 @@ int serve(const ServeOptions& options) {
     std::cerr << "grainlab serve: --host " << options.host << " is not an IP address\n";
     return 2;
   }
+  AccessTokens tokens;
+  try {
+    tokens = loadAccessTokens(options, [](const char* name) { return std::getenv(name); });
+  } catch (const std::exception& e) {
+    std::cerr << "grainlab serve: " << e.what() << "\n";
+    return 2;
+  }
   std::unique_ptr<Application> app;
   try {
-    app = std::make_unique<Application>(options);
+    app = std::make_unique<Application>(options, tokens);
   } catch (const std::exception& e) {
     std::cerr << "grainlab serve: cannot open the database " << options.db << ": " << e.what() << "\n";
     return 1;
@@ -49,6 +59,7 @@ int serve(const ServeOptions& options) {
               << e.code().message() << "\n";
     return 1;
   }
+  app->access().setPort(listener->port());
   listener->run();
   // Stream fan-out runs on the I/O threads, in order (one strand), not on the simulation's.
   app->hub().setDispatcher([fanout = net::make_strand(ioc)](std::function<void()> job) {
@@ -65,6 +76,14 @@ int serve(const ServeOptions& options) {
 
   std::cerr << "grainlab serve: listening on http://" << options.host << ":" << listener->port()
             << " (database " << options.db << ", web root " << options.webRoot << ")" << std::endl;
+  if (app->access().tokenRequired()) {
+    // The one place the token is written, for the person who started the server (as Jupyter
+    // does); 0.0.0.0 is no address to browse to, so the URL names loopback then.
+    std::string host = isUnspecifiedAddress(options.host) ? (address.is_v6() ? "::1" : "127.0.0.1") : options.host;
+    if (host.find(':') != std::string::npos) host = "[" + host + "]";
+    std::cerr << "grainlab serve: login URL: http://" << host << ":" << listener->port() << "/?token=" << tokens.full
+              << std::endl;
+  }
 
   std::vector<std::thread> pool;
   for (int i = 1; i < threads; ++i) pool.emplace_back([&ioc] { ioc.run(); });

@@ -23,7 +23,7 @@ json.dump(s, sys.stdout)' >"$work/scene.json"
 
 same_outputs() {  # $1 $2: run directories
   local f
-  for f in series.csv particles_final.csv contacts_final.csv; do
+  for f in series.csv particles_final.csv contacts_final.csv histograms.csv; do
     cmp -s "$1/$f" "$2/$f" || { echo "$f differs"; return 1; }
   done
   python3 - "$1/summary.json" "$2/summary.json" <<'EOF'

@@ -156,7 +156,7 @@ start_server() {
 stop_server() { kill -TERM "$SERVER_PID"; wait "$SERVER_PID"; local c=$?; SERVER_PID=; return $c; }
 start_server "$ROOT/c1.log"
 fill "$C" $((640 << 10))  # what the run may fill: 640 KiB (and the server's reserve)
-id=$(curl -s -XPOST "http://127.0.0.1:$PORT/api/runs" --data @"$ROOT/long.json" | json 'b.id')
+id=$(curl -s -XPOST -H "Content-Type: application/json" "http://127.0.0.1:$PORT/api/runs" --data @"$ROOT/long.json" | json 'b.id')
 t0=$(date +%s.%N)
 run=
 for _ in $(seq 1200); do

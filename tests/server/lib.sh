@@ -22,7 +22,7 @@ start_server() {
   "$GRAINLAB_SERVER" --host 127.0.0.1 --port 0 --db "$db" "$@" >"$log" 2>&1 &
   SERVER_PID=$!
   for _ in $(seq 200); do
-    PORT=$(grep -o 'listening on http://127.0.0.1:[0-9]*' "$log" 2>/dev/null | grep -o '[0-9]*$')
+    PORT=$(grep -o 'listening on http://[0-9.]*:[0-9]*' "$log" 2>/dev/null | grep -o '[0-9]*$')
     [[ -n $PORT ]] && return 0
     kill -0 "$SERVER_PID" 2>/dev/null || break
     sleep 0.1
@@ -55,6 +55,13 @@ req() {
   # HEAD through -I: with -X HEAD curl would wait for the body Content-Length announces.
   local how=(-X "$method")
   [[ $method == HEAD ]] && how=(-I)
+  # The API takes bodies only as JSON (415 otherwise); curl --data says form-urlencoded.
+  local arg body=0 typed=0
+  for arg in "$@"; do
+    [[ $arg == -d || $arg == --data* ]] && body=1
+    [[ ${arg,,} == content-type:* ]] && typed=1
+  done
+  ((body && !typed)) && how+=(-H 'Content-Type: application/json')
   BODY=$(curl -s --max-time 30 --path-as-is "${how[@]}" -D "$HEADERS" -o /dev/stdout -w '\n%{http_code}' "$@" "$(BASE)$path")
   STATUS=${BODY##*$'\n'}
   BODY=${BODY%$'\n'*}

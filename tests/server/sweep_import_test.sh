@@ -24,7 +24,7 @@ check "importing again adds none" grep -q '^imported 0 runs.*2 were there alread
 check "a folder that is no sweep is refused with status 2" test "$status" -eq 2
 check "...saying why" grep -q 'not a sweep folder' "$TMP_ROOT/err"
 
-start_server "$TMP_ROOT/server.log" "$db"
+start_server "$TMP_ROOT/server.log" "$db" --import-root "$TMP_ROOT"
 req GET /api/runs
 expect "the server lists the imported runs" 200 '"name":"first/001-duration=0.001"'
 id=$(json 'b.runs.find(r => r.name === "first/002-duration=0.002").id')

@@ -31,6 +31,11 @@ int main(int argc, char** argv) {
     else if (arg == "--io-threads") o.ioThreads = std::stoi(value);
     else if (arg == "--fps") o.framesPerSecond = std::stod(value);
     else if (arg == "--replay-every") o.replayFrameEvery = std::stoi(value);
+    else if (arg == "--token-file") o.tokenFile = value;
+    else if (arg == "--read-only-token-file") o.readOnlyTokenFile = value;
+    else if (arg == "--allowed-hosts") o.allowedHosts = {value};
+    else if (arg == "--allowed-origins") o.allowedOrigins = {value};
+    else if (arg == "--import-root") o.importRoot = value;
     else {
       std::cerr << "grainlab_test_server: unknown option " << arg << "\n";
       return 2;

@@ -223,7 +223,7 @@ await runBrowserTest([], async ({ server, browser }) => {
 
   // ---- polygons watched live, then cancelled and deleted ----
   const liveId = await page.evaluate(async () => {
-    const response = await fetch('/api/runs', { method: 'POST', body: JSON.stringify({ preset: 'elongated-random-quick' }) });
+    const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ preset: 'elongated-random-quick' }) });
     return (await response.json()).id;
   });
   // A run sheared faster than the lateral servo can follow: its header lists the warning.
@@ -273,7 +273,7 @@ await runBrowserTest([], async ({ server, browser }) => {
     const scene = await (await fetch('/api/presets/circular-quick')).json();
     scene.name = 'circular-quick, μ = 0.3';
     scene.material.friction = 0.3;
-    const response = await fetch('/api/runs', { method: 'POST', body: JSON.stringify(scene) });
+    const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(scene) });
     return (await response.json()).id;
   });
   const secondDone = await waitUntil(() => page.evaluate(async (id) =>
@@ -331,7 +331,7 @@ await runBrowserTest([], async ({ server, browser }) => {
 
   // ---- a rotation of the principal axes, charted against the rotation angle ----
   const rotationId = await page.evaluate(async () => {
-    const response = await fetch('/api/runs', { method: 'POST', body: JSON.stringify({ preset: 'rotation-circular-quick' }) });
+    const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ preset: 'rotation-circular-quick' }) });
     return (await response.json()).id;
   });
   const rotationDone = await waitUntil(() => page.evaluate(async (id) =>

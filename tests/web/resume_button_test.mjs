@@ -23,7 +23,7 @@ const OVERTIME = {
 await runBrowserTest(['--max-run-seconds', '2'], async ({ server, browser }) => {
   const { base } = server;
   const json = async (path, init) => (await fetch(`${base}${path}`, init)).json();
-  const { id } = await json('/api/runs', { method: 'POST', body: JSON.stringify(OVERTIME) });
+  const { id } = await json('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(OVERTIME) });
   const stopped = await waitUntil(async () => {
     const run = await json(`/api/runs/${id}`);
     return run.status === 'failed' ? run : null;

@@ -1,5 +1,6 @@
 // The REST API (docs/http-api.md, contracts.md): one function per endpoint. Failures throw
 // ApiError carrying the server's {"error", "field"} so forms can show them beside the field.
+import { showLoginForm } from './login.js';
 
 export class ApiError extends Error {
   constructor(status, message, field) {
@@ -21,6 +22,7 @@ async function request(method, path, { body, expect = 'json' } = {}) {
   } catch (error) {
     throw new ApiError(0, `the server cannot be reached (${error.message})`);
   }
+  if (response.status === 401) showLoginForm();
   if (!response.ok) {
     let message = `${response.status} ${response.statusText}`;
     let field = null;

@@ -5,6 +5,7 @@ import { runsView } from './views/runs_view.js';
 import { newRunView } from './views/new_run_view.js';
 import { runView } from './views/run_view.js';
 import { compareView } from './views/compare_view.js';
+import { loginFromAddressBar } from './login.js';
 
 const HEALTH_MS = 10000;
 const viewRoot = document.getElementById('view');
@@ -46,6 +47,7 @@ async function showHealth() {
   setTimeout(showHealth, HEALTH_MS);
 }
 
+await loginFromAddressBar();
 window.addEventListener('hashchange', route);
 route();
 showHealth();

@@ -1,11 +1,13 @@
 #pragma once
-// Everything `grainlab run` writes into a run's directory: the output files (OutputWriter)
-// and, when the scene asks for them (output.vtk), the ParaView frames (VtkWriter). The CLI
+// Everything `grainlab run` writes into a run's directory: the output files (OutputWriter),
+// the rose data when the scene asks for histograms (HistogramWriter, output.histograms) and
+// the ParaView frames when it asks for them (VtkWriter, output.vtk). The CLI
 // and the sweeps' batches both use it, so a sweep's run folder is what `grainlab run` writes.
 #include <optional>
 #include <ostream>
 #include <string>
 
+#include "grainlab/histogram_writer.hpp"
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/scene.hpp"
@@ -19,6 +21,7 @@ class RunOutput : public ObserverTee {
   RunOutput(const std::string& directory, const Scene& scene, std::ostream* progress)
       : files_(directory, progress) {
     add(files_);
+    if (scene.output.histograms) add(histograms_.emplace(directory));
     if (scene.output.vtk) add(vtk_.emplace(directory, scene.output.vtkEvery));
   }
   RunOutput(const RunOutput&) = delete;  // the tee points at the members
@@ -28,6 +31,7 @@ class RunOutput : public ObserverTee {
 
  private:
   OutputWriter files_;
+  std::optional<HistogramWriter> histograms_;
   std::optional<VtkWriter> vtk_;
 };
 

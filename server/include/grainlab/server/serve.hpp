@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "grainlab/run.hpp"
 
@@ -43,6 +44,15 @@ struct ServeOptions {
   /// On start-up, resume the runs that were interrupted and have a checkpoint (else they are
   /// only listed on stderr, for POST /api/runs/{id}/resume or the dashboard).
   bool resumeInterrupted = false;
+  /// Who may use the server (docs/security.md). Tokens are read from these files, else from
+  /// GRAINLAB_TOKEN and GRAINLAB_READ_ONLY_TOKEN; never from the command line. Bound to a
+  /// non-loopback address with no token given, the server makes one and prints a login URL.
+  std::string tokenFile;
+  std::string readOnlyTokenFile;            ///< a token that may read and watch, not change
+  std::vector<std::string> allowedHosts;    ///< Host names besides loopback and --host ("*": any)
+  std::vector<std::string> allowedOrigins;  ///< page origins besides the server's own ("*": any)
+  /// POST /api/sweeps/import reads only under this folder; empty = the endpoint is off.
+  std::string importRoot;
   /// Replaces grainlab::runScene (tests); empty = the real engine.
   RunFunction runFunction;
 };
