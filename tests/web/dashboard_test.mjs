@@ -230,7 +230,7 @@ await runBrowserTest([], async ({ server, browser }) => {
   const warnedId = await page.evaluate(async () => {
     const scene = await (await fetch('/api/presets/circular-quick')).json();
     scene.stages[2].strain_rate = 4;
-    return (await (await fetch('/api/runs', { method: 'POST', body: JSON.stringify(scene) })).json()).id;
+    return (await (await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(scene) })).json()).id;
   });
   await page.goto(`${base}/#/run/${warnedId}`);
   const warned = await waitUntil(async () => {
