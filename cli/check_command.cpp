@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "grainlab/presets.hpp"
-#include "grainlab/run_cost.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/validity.hpp"
 
 namespace grainlab {
 
@@ -16,8 +16,14 @@ int checkCommand(const std::vector<std::string>& args) {
   }
   const nlohmann::json json = preset ? presetScene(args[1]) : loadSceneJson(args[0]);
   const Scene scene = parseScene(json);  // a SceneError names the field (main prints it)
-  const RunCost cost = estimateSceneCost(scene);
-  std::cout << "ok: " << scene.stages.size() << " stages; " << cost.describe() << "\n";
+  // The cost's hard limit is grainlab run's (without --force).
+  const ValidityAssessment validity = assessSceneValidity(scene, 30 * 86400.0);
+  if (!validity.refusals.empty()) {
+    std::cerr << "error: " << validity.refusalMessage() << "\n";
+    return 2;
+  }
+  for (const ValidityWarning& w : validity.warnings) std::cout << describe(w) << "\n";
+  std::cout << "ok: " << scene.stages.size() << " stages; " << validity.cost.describe() << "\n";
   return 0;
 }
 

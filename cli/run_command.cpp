@@ -114,9 +114,8 @@ int runCommand(const std::vector<std::string>& args) {
     return failedWriting(e, out);
   }
   if (summary.refused) {
-    // A specimen that is missing or does not fit (start_from) is not a cost --force could waive.
-    const bool specimen = summary.error.rfind("start_from", 0) == 0;
-    std::cerr << "error: " << summary.error << (specimen ? "" : " (grainlab run --force runs it anyway)") << "\n";
+    std::cerr << "error: " << summary.error << (summary.refusedInvalid ? "" : " (grainlab run --force runs it anyway)")
+              << "\n";
     return 2;
   }
   return report(summary, output, out);

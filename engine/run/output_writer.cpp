@@ -63,6 +63,7 @@ nlohmann::json summaryJson(const RunSummary& summary, const World& world) {
   s["particles"] = summary.particles;
   s["peak_phi_mob_deg"] = summary.peakPhiMobDeg;
   if (!summary.notes.empty()) s["notes"] = summary.notes;
+  s["warnings"] = warningsJson(summary.warnings);
   if (summary.voidRatioAfterConsolidation >= 0) s["void_ratio_after_consolidation"] = summary.voidRatioAfterConsolidation;
   s["timestep"] = world.timestep();
   s["critical_timestep"] = world.criticalTimestep();
@@ -89,6 +90,11 @@ OutputWriter::OutputWriter(std::string directory, std::ostream* progress)
 
 void OutputWriter::onEstimate(const RunCost& cost) {
   if (progress_) *progress_ << "estimate: " << cost.describe() << "\n";
+}
+
+void OutputWriter::onWarnings(const std::vector<ValidityWarning>& warnings) {
+  if (!progress_) return;
+  for (const ValidityWarning& w : warnings) *progress_ << describe(w) << "\n";
 }
 
 void OutputWriter::onStart(const Scene&, const World&) {

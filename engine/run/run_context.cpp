@@ -5,13 +5,14 @@
 #include <cmath>
 #include <limits>
 
+#include "grainlab/errors.hpp"
 #include "grainlab/membrane.hpp"
 #include "grainlab/specimen.hpp"
 #include "grainlab/stages.hpp"
 
 namespace grainlab {
 
-RunContext::RunContext(const Scene& scene) : scene_(scene) {
+RunContext::RunContext(const Scene& scene) : scene_(scene), monitor_(scene) {
   WorldSettings settings;
   settings.threads = scene.solver.threads;
   if (scene.solver.engine == SolverSpec::Engine::Box2d) {
@@ -33,7 +34,13 @@ RunContext::RunContext(const Scene& scene) : scene_(scene) {
   world_->setGravity(scene.gravity);
   world_->setTimestepSafety(scene.solver.timestepSafety);
   if (scene.solver.timestep > 0) world_->setTimestep(scene.solver.timestep);
-  world_->initialize();  // contacts exist before the first sample checks them
+  try {
+    world_->initialize();  // contacts exist before the first sample checks them
+  } catch (const SimulationError& e) {
+    // Over the critical timestep: the field is the timestep the scene gives.
+    if (scene.solver.timestep > 0) throw SceneError("solver.timestep", e.what());
+    throw;
+  }
   if (scene.boundary.type == BoundarySpec::Type::Membrane) membrane_ = std::make_unique<Membrane>(*world_);
   sampler_ = std::make_unique<Sampler>(scene.output, *world_, membrane_.get());
 }
@@ -54,6 +61,7 @@ Stage& RunContext::beginStage(size_t index) {
     sampler_->resetStrainReference();
   }
   stage_ = makeStage(spec, scene_.output, *world_, membrane_.get());
+  stageStartSample_ = true;
   nextSample_ = stage_->sampleCoordinate() + stage_->sampleSpacing();
   return *stage_;
 }
@@ -77,6 +85,7 @@ void RunContext::persist(StateArchive& a) {
   world_->persist(a);
   if (membrane_) membrane_->persist(a);
   sampler_->persist(a);
+  monitor_.persist(a);
   if (a.loading()) {
     // As beginStage, without what it resets: friction, strain references and the next
     // sample come from the checkpoint.
@@ -98,6 +107,8 @@ void RunContext::sample(RunObserver& observer) {
   const auto t0 = std::chrono::steady_clock::now();
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);
   sampleSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  monitor_.observe(s, *world_, stageIndex_, stageStartSample_);
+  stageStartSample_ = false;
   observer.onSample(s, *world_);
   // The next multiple of the spacing past where the stage is: computed, not stepped to, so
   // a spacing too small to change a large coordinate cannot loop forever.

@@ -10,6 +10,7 @@
 #include "grainlab/stage.hpp"
 #include "grainlab/world.hpp"
 #include "sampler.hpp"
+#include "validity_monitor.hpp"
 
 namespace grainlab {
 
@@ -33,6 +34,11 @@ class RunContext {
   double peakPhiMobDeg() const { return sampler_->peakPhiMobDeg(); }
   double voidRatioAfterConsolidation() const { return voidRatioAfterConsolidation_; }
   double sampleSeconds() const { return sampleSeconds_; }
+  /// The validity envelope's first crossings measured so far (ValidityMonitor).
+  /// The validity envelope's warnings: those it started with (addWarnings), then the first
+  /// crossings measured so far (ValidityMonitor).
+  const std::vector<ValidityWarning>& runWarnings() const { return monitor_.warnings(); }
+  void addWarnings(const std::vector<ValidityWarning>& warnings) { monitor_.add(warnings); }
   /// Checkpoints: the world, the ring, the sampler and the current stage, mid-stage. Loading
   /// (into a context just built from the same scene) rebuilds that stage on the loaded world
   /// and then loads its state: stage() is then the stage to go on with.
@@ -50,6 +56,8 @@ class RunContext {
   std::unique_ptr<Membrane> membrane_;
   std::unique_ptr<Sampler> sampler_;
   std::unique_ptr<Stage> stage_;
+  ValidityMonitor monitor_;
+  bool stageStartSample_ = false;  // the next sample is the state a stage starts from
   size_t stageIndex_ = 0;
   double nextSample_ = 0;
   std::int64_t lastSampleStep_ = -1;

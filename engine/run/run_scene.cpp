@@ -1,6 +1,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -176,8 +177,12 @@ RunSummary finish(const Scene& scene, RunContext& context, RunObserver& observer
     RunLoop(scene, context, observer, policy, stageDirectory, start).run(loop, summary, resumed);
   } catch (const std::exception& e) {
     summary.status = RunStatus::Failed;
-    summary.error = e.what();
+    // A run that fails for physical reasons names the scene field most likely responsible;
+    // the engine's own reason follows.
+    const std::string cause = likelyCause(scene, world);
+    summary.error = cause.empty() ? e.what() : cause + "; the run stopped: " + e.what();
   }
+  summary.warnings = context.runWarnings();
   summary.steps = world.stepCount();
   summary.particles = world.size();
   summary.peakPhiMobDeg = context.peakPhiMobDeg();
@@ -234,8 +239,20 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   const auto start = Clock::now();
   RunSummary summary;
   std::unique_ptr<RunContext> context;
+  // Refused by field: past a hard limit of what the scene alone decides, or unbuildable.
+  auto refuse = [&](const std::string& why) {
+    summary.status = RunStatus::Failed;
+    summary.refused = summary.refusedInvalid = true;
+    summary.error = why;
+    summary.wallSeconds = since(start);
+    return summary;
+  };
+  if (const ValidityAssessment alone = assessSceneAlone(scene); !alone.refusals.empty())
+    return refuse(alone.refusalMessage());
   try {
     context = std::make_unique<RunContext>(scene);
+  } catch (const SceneError& e) {
+    return refuse(e.field() + ": " + e.reason());
   } catch (const std::exception& e) {
     summary.status = RunStatus::Failed;
     summary.error = e.what();
@@ -252,17 +269,18 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
       loop.timestepNoted = history.timestepNoted;
       summary.notes = history.notes;
     } catch (const std::exception& e) {
-      summary.status = RunStatus::Failed;
-      summary.refused = true;
-      summary.error = e.what();
-      summary.wallSeconds = since(start);
-      return summary;
+      return refuse(e.what());
     }
   }
   World& world = context->world();
   summary.particles = world.size();
   const RunCost cost = estimateRunCost(scene, world);
   observer.onEstimate(cost);
+  // The validity envelope: refused past a hard limit, naming the field; warned past a soft one.
+  const ValidityAssessment validity = assessValidity(scene, world, cost, std::numeric_limits<double>::infinity());
+  if (!validity.refusals.empty()) return refuse(validity.refusalMessage());
+  context->addWarnings(validity.warnings);  // kept with the run's state: a resumed run has them
+  observer.onWarnings(validity.warnings);
   if (cost.certainSeconds() > limits.maxSeconds) {
     std::ostringstream os;
     os << cost.field << ": the run would take at least about " << humanDuration(cost.certainSeconds()) << " (" << cost.describe()

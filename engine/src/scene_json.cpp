@@ -95,6 +95,7 @@ void parseRotation(JsonReader& r, StageSpec& s) {
     throw SceneError(r.fieldPath("duration"),
                      "give two of rotation_rate_deg_per_s, total_rotation_deg and duration, not all three");
   }
+  s.rotationDerivedField = !duration ? "duration" : !total ? "total_rotation_deg" : "rotation_rate_deg_per_s";
   if (rate) {
     s.rotationRateDeg = r.number("rotation_rate_deg_per_s", 0, -kInf, kInf);
     if (s.rotationRateDeg == 0) throw SceneError(r.fieldPath("rotation_rate_deg_per_s"), "must not be zero");

@@ -1,5 +1,6 @@
 // The scene's "assembly" object <-> SpecimenRecipe. Keys are snake_case; lengths in m;
 // the bedding angle is in degrees in JSON and radians in the struct.
+#include <cmath>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -53,7 +54,21 @@ SpecimenRecipe parseSpecimenRecipe(const nlohmann::json& assembly, const std::st
   r.finish();
   // The checks across fields (element ranges, the grading solve, the particle count) are
   // the generator's own, so a recipe that parses always generates.
-  specimen::planSpecimen(recipe, path);
+  try {
+    specimen::planSpecimen(recipe, path);
+  } catch (const SceneError& e) {
+    // Too many particles follows from the specimen's size over the grains': name the grains'
+    // size when it is the further of the two from its default.
+    const SpecimenRecipe defaults;
+    const bool discs = recipe.shape == SpecimenRecipe::Shape::Disc;
+    const double grain = discs ? recipe.discRadius : recipe.longAxes.front();
+    const double grainDefault = discs ? defaults.discRadius : defaults.longAxes.front();
+    const bool grainsSmall = std::log(grainDefault / grain) > std::log(recipe.specimenDiameter / defaults.specimenDiameter);
+    if (e.field() == path + ".specimen_diameter" && e.reason().find("particles, more than") != std::string::npos &&
+        grain > 0 && grainsSmall)
+      throw SceneError(path + (discs ? ".disc_radius" : ".long_axes"), e.reason());
+    throw;
+  }
   return recipe;
 }
 

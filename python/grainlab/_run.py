@@ -35,6 +35,12 @@ class Run:
     def status(self):
         return self.summary.get("status")
 
+    @property
+    def warnings(self):
+        """The validity envelope's warnings (docs/validity.md): a list of dicts with field,
+        quantity, value, limit, meaning, and step for one measured during the run."""
+        return self.summary.get("warnings", [])
+
     def series_df(self):
         """The series as a pandas DataFrame (pandas is needed only here)."""
         try:

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
+#include "grainlab/errors.hpp"
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
@@ -141,9 +142,16 @@ py::dict runScene(const Scene& scene, const std::string& out, const py::object& 
   ObserverTee observers{&collector};
   std::optional<RunOutput> files;  // what `grainlab run --out` writes
   if (!out.empty()) observers.add(files.emplace(out, scene, nullptr));
+  RunSummary summary;
   {
     py::gil_scoped_release release;
-    grainlab::runScene(scene, observers);
+    summary = grainlab::runScene(scene, observers);
+  }
+  // Past a hard limit of the validity envelope: a bad scene, raised as SceneError naming the
+  // field (the error starts "field: ..."). Nothing was run or written.
+  if (summary.refusedInvalid) {
+    const size_t colon = summary.error.find(": ");
+    throw SceneError(summary.error.substr(0, colon), colon == std::string::npos ? "" : summary.error.substr(colon + 2));
   }
   return collector.result();
 }

@@ -71,6 +71,8 @@ constexpr const char* kMigrations[] = {
     "ALTER TABLE runs ADD COLUMN cpu_seconds REAL;",
     // 2 -> 3: the wall time the run was estimated to need when it was queued.
     "ALTER TABLE runs ADD COLUMN estimated_seconds REAL;",
+    // 3 -> 4: the validity envelope's warnings, a JSON array (docs/validity.md).
+    "ALTER TABLE runs ADD COLUMN warnings TEXT;",
 };
 
 // Every statement the server runs, by name.
@@ -78,12 +80,12 @@ namespace sql {
 // The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
 constexpr const char* kListRuns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds FROM runs "
-    "ORDER BY id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
+    "FROM runs ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds FROM runs "
-    "WHERE id = :id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
+    "FROM runs WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
 constexpr const char* kHistograms =
@@ -100,8 +102,8 @@ constexpr const char* kLastFrame =
 constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shapes IS NOT NULL";
 
 constexpr const char* kInsertRun =
-    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds) "
-    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds)";
+    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings) "
+    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings)";
 constexpr const char* kMarkStarted =
     "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
 constexpr const char* kUpdateProgress =
@@ -119,7 +121,7 @@ constexpr const char* kInsertFrame =
 constexpr const char* kFinishRun =
     "UPDATE runs SET status = :status, error = :error, stage = :stage, finished_at = :finished_at, "
     "wall_seconds = :wall_seconds, cpu_seconds = :cpu_seconds, steps = :steps, particles = :particles, "
-    "peak_phi_mob_deg = :peak, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
+    "peak_phi_mob_deg = :peak, warnings = :warnings, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
     "WHERE id = :id";
 constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
 // A resumed run waits in the queue again; its end is not known any more.
@@ -169,6 +171,7 @@ RunRecord readRun(StatementUse& use) {
   r.peakPhiMobDeg = optionalAt(use, 14);
   r.cpuSeconds = optionalAt(use, 15);
   r.estimatedSeconds = optionalAt(use, 16);
+  if (!use.isNull(17)) r.warnings = use.textAt(17);
   return r;
 }
 
@@ -485,6 +488,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
           .bind(":particles", run.particles)
           .bind(":created_at", run.createdAt);
       bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
+      use.bindText(":warnings", run.warnings);
       use.run();
       id = w.db.lastInsertId();
     } catch (...) {
@@ -571,6 +575,7 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
       bindOptional(use, ":wall_seconds", end.wallSeconds);
       bindOptional(use, ":cpu_seconds", end.cpuSeconds);
       bindOptional(use, ":peak", end.peakPhiMobDeg);
+      use.bindText(":warnings", end.warnings);
       use.run();
     }
     if (after) w.afterCommit.push_back(after);  // (a copy: a refused batch runs its jobs again)

@@ -33,6 +33,7 @@ struct RunEnd {
   std::int64_t steps = 0;
   int particles = 0;
   std::optional<double> peakPhiMobDeg;
+  std::string warnings = "[]";  ///< the validity envelope's, as summary.json's "warnings" (JSON)
 };
 
 class Repository {

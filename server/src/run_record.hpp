@@ -32,6 +32,7 @@ struct RunRecord {
   /// free and shearing stages; compaction and consolidation end on criteria and add to it).
   std::optional<double> estimatedSeconds;
   std::optional<double> peakPhiMobDeg;
+  std::string warnings = "[]";     ///< the validity envelope's, as summary.json's "warnings" (JSON)
 };
 
 /// One row of the series as the engine produced it.

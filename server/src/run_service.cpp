@@ -7,6 +7,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <numeric>
 
 #include "grainlab/errors.hpp"
@@ -15,6 +16,7 @@
 #include "grainlab/scene.hpp"
 #include "grainlab/specimen.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
+#include "grainlab/validity.hpp"
 #include "api_types.hpp"
 #include "import_root.hpp"
 #include "live_run.hpp"
@@ -197,7 +199,11 @@ std::int64_t RunService::create(const std::string& body) {
   // A scene whose cost is absurd (a stiffness of 1e30 N/m steps at 1e-17 s) would hold a run
   // slot at 0 % for ever: refuse it now, naming the field that drives the cost.
   // Building the world can also refuse the scene (particles overlapping by half at the start).
-  const RunCost cost = badSceneAs400([&] { return estimateSceneCost(scene); }, "(scene)");
+  // Past the validity envelope's hard limits the results would mean nothing: refused by field.
+  const ValidityAssessment validity =
+      badSceneAs400([&] { return assessSceneValidity(scene, std::numeric_limits<double>::infinity()); }, "(scene)");
+  if (!validity.refusals.empty()) throw ApiError(400, validity.refusalMessage(), validity.refusals.front().field);
+  const RunCost& cost = validity.cost;
   if (cost.certainSeconds() > options_.maxRunSeconds)
     throw ApiError(400,
                    "the run would take about " + humanDuration(cost.certainSeconds()) + " (" + cost.describe() +
@@ -214,6 +220,7 @@ std::int64_t RunService::create(const std::string& body) {
   record.status = RunStatus::Queued;
   record.particles = particles;
   record.estimatedSeconds = cost.certainSeconds();
+  record.warnings = warningsJson(validity.warnings).dump();
   record.createdAt = unixNow();
   std::int64_t id = 0;
   try {
@@ -333,6 +340,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   end.steps = summary.steps > 0 ? summary.steps : state.steps;
   end.particles = summary.particles > 0 ? summary.particles : state.particles;
   if (end.status == RunStatus::Completed || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
+  end.warnings = warningsJson(summary.warnings).dump();
 
   if (run->deleted()) {
     // Queued after the run's last writes, so nothing of it is left behind.
@@ -421,6 +429,8 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
       {"peak_phi_mob_deg", orNull(merged.peakPhiMobDeg)},
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},
   };
+  const nlohmann::json warnings = nlohmann::json::parse(merged.warnings, nullptr, false);
+  j["warnings"] = warnings.is_array() ? warnings : nlohmann::json::array();
   if (cancelRequested) j["cancel_requested"] = true;
   j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);

@@ -125,6 +125,7 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     end.steps = summary.value("steps", std::int64_t{0});
     end.particles = record.particles;
     if (summary.contains("peak_phi_mob_deg")) end.peakPhiMobDeg = summary["peak_phi_mob_deg"].get<double>();
+    if (summary.contains("warnings")) end.warnings = summary["warnings"].dump();
     repo.finishRun(runId, end, [] {});
     outcome.ids.push_back(runId);
   }

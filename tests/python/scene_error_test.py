@@ -62,6 +62,26 @@ class SceneErrorTest(unittest.TestCase):
         self.assertEqual(ctx.exception.field, "material.density")
         self.assertFalse(os.path.exists(out))
 
+    def test_past_the_validity_envelope(self):
+        # Sheared at 1e6 /s the inertial number is ~400: refused naming the rate, not run.
+        s = self.scene()
+        s["stages"][2]["strain_rate"] = 1e6
+        with self.assertRaises(grainlab.SceneError) as ctx:
+            grainlab.run(s, progress=False)
+        self.assertEqual(ctx.exception.field, "stages[2].strain_rate")
+        self.assertIn("inertial_number", ctx.exception.reason)
+
+    def test_warnings_travel_with_the_run(self):
+        # At 4 /s the lateral servo cannot hold sigma11: run, and warned before and during.
+        s = self.scene()
+        s["stages"][2]["strain_rate"] = 4
+        run = grainlab.run(s, progress=False)
+        self.assertEqual(run.status, "completed")
+        quantities = {(w["quantity"], w["field"]) for w in run.warnings}
+        self.assertIn(("lateral_servo_inertial_number", "stages[2].strain_rate"), quantities)
+        measured = [w for w in run.warnings if "step" in w]
+        self.assertTrue(measured, run.warnings)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -111,6 +111,19 @@ expect "unknown preset: 400" 400 '"field":"preset"'
 # A stiffness of 1e30 N/m steps at ~1e-17 s: a second of it would hold a run slot for ever.
 req POST /api/runs --data '{"name":"stiff","material":{"normal_stiffness":1e30,"tangential_stiffness":1e30},"particles":[{"shape":"disc","radius":0.002,"position":[0,0]}],"stages":[{"type":"free","duration":1}]}'
 expect "absurd cost: 400 names the field that drives it" 400 '"error":"the run would take about [^"]*years[^"]*","field":"material\.normal_stiffness"'
+# The validity envelope (docs/validity.md): past a hard limit refused naming the field (a grain
+# 20,000 times smaller than its neighbour); past a soft one run, the warning in the detail (two
+# discs starting 20% of a radius inside each other).
+req POST /api/runs --data '{"name":"speck","particles":[{"radius":0.002,"position":[0,0]},{"radius":1e-7,"position":[0.01,0]}],"stages":[{"type":"free","duration":0.001}]}'
+expect "past the validity envelope: 400 names the field" 400 '"error":"particles\[1\]\.radius: size_ratio [^"]*","field":"particles\[1\]\.radius"'
+req POST /api/runs --data '{"name":"deep","particles":[{"radius":0.002,"position":[0,0]},{"radius":0.002,"position":[0.0036,0]}],"stages":[{"type":"free","duration":0.001}]}'
+expect "a warned scene runs: 201" 201
+WARNED=$(json b.id)
+req GET "/api/runs/$WARNED"
+expect "its warnings are in the detail while queued or running" 200 '"warnings":\[\{"field":"particles\[[01]\]\.radius","limit":0\.1,"meaning":"[^"]*","quantity":"initial_overlap"'
+check "the warned run completes" wait_status "$WARNED" completed 60
+req GET "/api/runs/$WARNED"
+expect "and once it has ended" 200 '"quantity":"initial_overlap"'
 req POST /api/runs --data '{"preset":"circular-quick"}'
 expect "past the particle limit: 503" 503 '"error":"this server runs at most 100 particles per run[^"]*","field":"particles"'
 head -c 200000 /dev/zero | tr '\0' ' ' >"$TMP_ROOT/big.json"

@@ -151,10 +151,10 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     repo.flush().get();
   }
   {
-    // What a version-1 database looked like: no cpu_seconds nor estimated_seconds column.
+    // What a version-1 database looked like: no cpu_seconds, estimated_seconds nor warnings column.
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN estimated_seconds; ALTER TABLE runs DROP COLUMN cpu_seconds; "
-            "PRAGMA user_version = 1;");
+    db.exec("ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
+            "ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
   }
   Repository repo(path);
   auto run = repo.findRun(id);
@@ -163,6 +163,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_DOUBLE_EQ(*run->wallSeconds, 0.75);
   EXPECT_FALSE(run->cpuSeconds);
   EXPECT_FALSE(run->estimatedSeconds);
+  EXPECT_EQ(run->warnings, "[]");  // a run from before the envelope: none recorded
   Database db(path, false);
   EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
 }

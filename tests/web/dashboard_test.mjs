@@ -107,6 +107,7 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('the run completes and the header says so', Boolean(completed));
   const facts = await page.locator('.run-header .facts').textContent();
   check('the header shows the estimate the run was queued with', /estimated ≥ \S+/.test(facts), facts);
+  check('a preset inside the validity envelope shows no warnings', await page.locator('.run-header .warnings').isHidden());
   const replayReady = await waitUntil(() => page.$eval('.replay-bar input[type=range]', (s) => !s.disabled), 30);
   check('the replay slider is enabled once the run has ended', Boolean(replayReady));
 
@@ -225,6 +226,19 @@ await runBrowserTest([], async ({ server, browser }) => {
     const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ preset: 'elongated-random-quick' }) });
     return (await response.json()).id;
   });
+  // A run sheared faster than the lateral servo can follow: its header lists the warning.
+  const warnedId = await page.evaluate(async () => {
+    const scene = await (await fetch('/api/presets/circular-quick')).json();
+    scene.stages[2].strain_rate = 4;
+    return (await (await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(scene) })).json()).id;
+  });
+  await page.goto(`${base}/#/run/${warnedId}`);
+  const warned = await waitUntil(async () => {
+    const list = page.locator('.run-header .warnings');
+    return (await list.isVisible()) ? list.textContent() : null;
+  }, 30);
+  check('a warned run lists its warnings in the header', /stages\[2\]\.strain_rate: lateral_servo_inertial_number/.test(warned ?? ''),
+    warned);
   await page.goto(`${base}/#/run/${liveId}`);
   const firstStep = await waitUntil(() => page.$eval('canvas.particle-canvas', (c) => c.dataset.step), 60);
   const laterStep = await waitUntil(async () => {

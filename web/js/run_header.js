@@ -13,6 +13,8 @@ export class RunHeader {
     this.bar = h('span');
     this.progressLabel = h('span', { class: 'label' });
     this.facts = h('span', { class: 'facts' });
+    // The validity envelope's warnings (docs/validity.md): the run goes on, its results may not mean what they say.
+    this.warnings = h('ul', { class: 'warnings', hidden: true });
     this.cancel = h('button', { type: 'button', class: 'danger', onclick: onCancel }, 'Cancel run');
     // An interrupted run (server stopped or killed, wall-time limit) goes on from its checkpoint.
     this.resume = h('button', { type: 'button', onclick: onResume, hidden: true }, 'Resume run');
@@ -22,7 +24,8 @@ export class RunHeader {
       this.title, this.status,
       h('span', { class: 'progress', title: 'progress' }, h('span', { class: 'bar' }, this.bar), this.progressLabel),
       this.facts,
-      h('span', { class: 'actions' }, this.cancel, this.resume, this.csv, this.compare));
+      h('span', { class: 'actions' }, this.cancel, this.resume, this.csv, this.compare),
+      this.warnings);
     parent.append(this.element);
   }
 
@@ -59,6 +62,11 @@ export class RunHeader {
       estimate,
       run.peak_phi_mob_deg !== null ? `peak φ_mob ${sig(run.peak_phi_mob_deg, 3)}°` : null,
     ].filter(Boolean).join(' · ');
+    const warnings = run.warnings ?? [];
+    this.warnings.hidden = warnings.length === 0;
+    this.warnings.replaceChildren(...warnings.map((w) => h('li', {},
+      `warning: ${w.field}: ${w.quantity} ${sig(w.value, 3)} (limit ${sig(w.limit, 3)})` +
+      `${w.step != null ? ` at step ${w.step}` : ''}: ${w.meaning}`)));
     this.cancel.hidden = !running;
     this.resume.hidden = running || !run.resumable;
     this.csv.href = api.csvUrl(run.id);

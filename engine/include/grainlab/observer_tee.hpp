@@ -17,6 +17,9 @@ class ObserverTee : public RunObserver {
   void onEstimate(const RunCost& cost) override {
     for (RunObserver* o : observers_) o->onEstimate(cost);
   }
+  void onWarnings(const std::vector<ValidityWarning>& warnings) override {
+    for (RunObserver* o : observers_) o->onWarnings(warnings);
+  }
   void onStart(const Scene& scene, const World& world) override {
     for (RunObserver* o : observers_) o->onStart(scene, world);
   }

@@ -20,6 +20,8 @@ class OutputWriter : public RunObserver {
   /// Creates `directory` if needed. `progress` (may be null) receives a progress line now and then.
   OutputWriter(std::string directory, std::ostream* progress);
   void onEstimate(const RunCost&) override;
+  /// The validity envelope's warnings, each on a line of the progress stream.
+  void onWarnings(const std::vector<ValidityWarning>& warnings) override;
   void onStart(const Scene&, const World&) override;
   void onSample(const Sample&, const World&) override;
   void onProgress(double fraction, std::string_view stage, const World&) override;

@@ -11,6 +11,7 @@
 #include "grainlab/run_status.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/series_column.hpp"
+#include "grainlab/validity.hpp"
 
 namespace grainlab {
 
@@ -31,6 +32,13 @@ struct RunSummary {
   RunStatus status = RunStatus::Completed;
   std::string error;                  ///< why it failed
   bool refused = false;               ///< failed before its first step: its cost is over the limit
+  /// refused for what the scene itself says: the validity envelope's hard limits say its
+  /// results would mean nothing (grainlab/validity.hpp), or its prepared specimen (start_from)
+  /// is missing or does not fit; a larger cost limit does not lift these
+  bool refusedInvalid = false;
+  /// The validity envelope's warnings: before the first step, then the first crossings measured
+  /// during the run (with their step).
+  std::vector<ValidityWarning> warnings;
   double wallSeconds = 0;
   double sampleSeconds = 0;           ///< of wallSeconds, spent measuring samples (analysis)
   std::int64_t steps = 0;
@@ -60,6 +68,9 @@ class RunObserver {
   /// Once the world is built and its cost estimated, before onStart (and instead of it when
   /// the run is refused for its cost).
   virtual void onEstimate(const RunCost&) {}
+  /// After onEstimate, when the scene is inside the validity envelope's hard limits: its
+  /// warnings (possibly none). Not called on resume.
+  virtual void onWarnings(const std::vector<ValidityWarning>&) {}
   /// Once the world is built, before the first step.
   virtual void onStart(const Scene&, const World&) {}
   /// At every sample; the world is in the state the sample describes.

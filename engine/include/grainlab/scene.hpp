@@ -37,6 +37,9 @@ struct StageSpec {
   /// rotation: ε̇1 − ε̇3 of the deviatoric strain rate, 1/s (its principal values are ±½ of it)
   double deviatoricStrainRate = 0;
   double rotationRateDeg = 0;     ///< rotation: °/s, counter-clockwise positive
+  /// rotation: the one of rotation_rate_deg_per_s, total_rotation_deg and duration that the
+  /// parser derived from the other two (not a field the scene gave)
+  std::string rotationDerivedField;
   double initialDirectionDeg = 90;///< rotation: θ_ε̇ at the start (90° = vertical compression)
   std::optional<double> strainAmplitude;  ///< cyclic: reverse at axial strain ±amplitude
   std::optional<std::pair<double, double>> qOverPLimits;  ///< cyclic: or at these (σ22−σ11)/(σ22+σ11)

@@ -1,6 +1,7 @@
 #include "grainlab/studies/sweep_table.hpp"
 
 #include "grainlab/output_writer.hpp"
+#include "grainlab/validity.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -61,6 +62,7 @@ const std::vector<std::string>& sweepResultColumns() {
     std::vector<std::string> c{"status", "error", "wall_seconds"};
     c.insert(c.end(), kSummaryColumns.begin(), kSummaryColumns.end());
     for (const std::string& name : kFinalColumns) c.push_back("final_" + name);
+    c.push_back("warnings");  // the validity envelope's, as "quantity at field; ..." (docs/validity.md)
     return c;
   }();
   return columns;
@@ -99,6 +101,10 @@ std::string sweepTable(const std::vector<SweepRun>& runs, const std::vector<Batc
       const auto it = last.find(name);
       cell(it == last.end() ? std::string() : it->second);
     }
+    std::string warnings;
+    for (const ValidityWarning& w : warningsFromJson(summary.value("warnings", nlohmann::json::array())))
+      warnings += (warnings.empty() ? "" : "; ") + w.quantity + " at " + w.field;
+    cell(warnings);
     text += '\n';
   }
   return text;

@@ -53,19 +53,26 @@ std::string td(const std::string& text, bool number = false) {
   return std::string(number ? "<td class=\"num\">" : "<td>") + escapeMarkup(text) + "</td>";
 }
 
+// "quantity at field; ..." of a run's validity warnings.
+std::string warningList(const AssemblyResult& a) {
+  std::string out;
+  for (const ValidityWarning& w : a.summary.warnings) out += (out.empty() ? "" : "; ") + w.quantity + " at " + w.field;
+  return out;
+}
+
 }  // namespace
 
 CsvTable runsTable(std::span<const AssemblyResult> runs) {
   CsvTable t({"assembly", "seed", "status", "error", "particles", "steps", "wall_seconds", "void_ratio_after_consolidation",
               "paper_void_ratio", "peak_phi_mob_shearing_deg", "shearing_samples", "contacts_at_start", "final_axial_strain",
-              "directory"});
+              "directory", "warnings"});
   for (const AssemblyResult& a : runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
     const size_t n = a.shearing.size();
     t.addRow({a.preset, a.seed, std::string(toString(a.summary.status)), a.summary.error, a.summary.particles, static_cast<double>(a.summary.steps),
               a.summary.wallSeconds, e >= 0 ? e : std::nan(""), paperVoidRatio(a), finiteMax(a.shearing.column("phi_mob_deg")),
               static_cast<int>(n), n ? a.shearing.at("contacts", 0) : std::nan(""),
-              n ? a.shearing.at("axial_strain", n - 1) : std::nan(""), runDirectory(a)});
+              n ? a.shearing.at("axial_strain", n - 1) : std::nan(""), runDirectory(a), warningList(a)});
   }
   return t;
 }
@@ -128,7 +135,20 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
          td(a.shearing.size() ? fixed(a.shearing.at("contacts", 0), 0) : "-", true) + "<td><a href=\"" +
          escapeMarkup(runDirectory(a)) + "/series.csv\">series.csv</a></td></tr>\n";
   }
-  o += "</table>\n<p>Data: <a href=\"runs.csv\">runs.csv</a>. Each run's own output (series.csv, summary.json, "
+  o += "</table>\n";
+  // A warned run is in the ensemble's figures like the others: say which ones they are.
+  std::string warned;
+  for (const AssemblyResult& a : runs) {
+    if (a.summary.warnings.empty()) continue;
+    warned += "<li>" + escapeMarkup(a.preset) + " seed " + std::to_string(a.seed) + ": ";
+    for (size_t k = 0; k < a.summary.warnings.size(); ++k)
+      warned += (k ? "; " : "") + escapeMarkup(describe(a.summary.warnings[k]).substr(9));  // without "warning: "
+    warned += "</li>\n";
+  }
+  o += warned.empty() ? "<p>No run carried a validity warning (docs/validity.md in the grainlab repository).</p>\n"
+                      : "<p>Runs that carried validity warnings (in the figures with the others; docs/validity.md "
+                        "in the grainlab repository says what each means):</p>\n<ul>\n" + warned + "</ul>\n";
+  o += "<p>Data: <a href=\"runs.csv\">runs.csv</a>. Each run's own output (series.csv, summary.json, "
        "final particles and contacts, the scene with its seed) is in runs/&lt;preset&gt;/seed-&lt;s&gt;/.</p>\n";
 
   o += "<h2 id=\"findings\">Findings</h2>\n<table class=\"findings\">\n<tr><th>#</th><th>the paper's claim</th>"

@@ -63,6 +63,7 @@ RunSummary readRunSummary(const std::string& runDir) {
   summary.particles = s.value("particles", 0);
   summary.peakPhiMobDeg = s.value("peak_phi_mob_deg", 0.0);
   summary.voidRatioAfterConsolidation = s.value("void_ratio_after_consolidation", -1.0);
+  summary.warnings = warningsFromJson(s.value("warnings", nlohmann::json::array()));
   return summary;
 }
 
