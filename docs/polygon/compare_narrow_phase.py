@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Before/after statistics of a narrow-phase change over seed ensembles (issue 18).
+"""Before/after statistics of a narrow-phase change over seed ensembles.
 
 Usage: compare_narrow_phase.py BEFORE_ROOT AFTER_ROOT
 Each root holds one `grainlab sweep` output per preset (runs/<id>/series.csv, summary.json),
