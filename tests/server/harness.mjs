@@ -43,9 +43,11 @@ export async function startServer(args = []) {
   // if nothing the test checks afterwards notices. Killed by a signal, node gives a null code
   // and the signal's name: report the name.
   let stopping = false;
+  let crashed = false;
   const exited = new Promise((r) => proc.on('exit', (code, signal) => {
     if (!stopping) {
-      check('the server runs until the test stops it', false, `it exited by itself (${code ?? signal}): ${log}`);
+      crashed = true;
+      check('the server runs until the test stops it', false, `(it exited by itself with ${code ?? signal}) ${log}`);
       process.exitCode = 1;
     }
     r(code ?? signal);
@@ -61,7 +63,7 @@ export async function startServer(args = []) {
       stopping = true;
       proc.kill(signal);
       const code = await exited;
-      if (signal === 'SIGTERM' && code !== 0) check('the server stops cleanly on SIGTERM', false, `exit ${code}: ${log}`);
+      if (signal === 'SIGTERM' && code !== 0 && !crashed) check('the server stops cleanly on SIGTERM', false, `(exit ${code}) ${log}`);
       return code;
     },
   };
