@@ -10,7 +10,7 @@ import unittest
 import numpy as np
 
 import grainlab
-from support import CLI_RUN
+from support import CLI_RUN, optional_module
 
 STRESS = ("sigma11", "sigma22", "sigma12", "sigma21", "p", "q")
 FABRIC = ("a_c", "theta_c_deg", "a_n", "theta_n_deg", "a_t", "theta_t_deg", "a_w", "a_ln",
@@ -68,10 +68,9 @@ class AnalysisTest(unittest.TestCase):
             self.close(f[name], self.last[name], name, rel=1e-9)
 
     def test_dataframe_input(self):
-        try:
-            import pandas
-        except ImportError:
-            self.skipTest("pandas not installed")
+        pandas = optional_module("pandas", "python3-pandas")
+        if pandas is None:
+            self.skipTest("left out: configured with -DGRAINLAB_PYTHON_OPTIONAL_MODULES=OFF")
         s = grainlab.stress(pandas.DataFrame(self.contacts), self.area,
                             particles=pandas.DataFrame(self.particles))
         self.close(s["sigma22"], self.last["sigma22"], "sigma22")

@@ -39,14 +39,33 @@ export async function startServer(args = []) {
     });
     proc.on('exit', (code) => reject(new Error(`server exited ${code}: ${log}`)));
   });
-  const exited = new Promise((r) => proc.on('exit', (code) => r(code)));
+  // A server that exits before the test stops it crashed (or quit): that fails the test, even
+  // if nothing the test checks afterwards notices. Killed by a signal, node gives a null code
+  // and the signal's name: report the name.
+  let stopping = false;
+  let crashed = false;
+  const exited = new Promise((r) => proc.on('exit', (code, signal) => {
+    if (!stopping) {
+      crashed = true;
+      check('the server runs until the test stops it', false, `(it exited by itself with ${code ?? signal}) ${log}`);
+      process.exitCode = 1;
+    }
+    r(code ?? signal);
+  }));
   process.on('exit', () => proc.kill('SIGKILL'));
   return {
     pid: proc.pid,
     base: `http://127.0.0.1:${port}`,
     wsBase: `ws://127.0.0.1:${port}`,
     log: () => log,
-    stop: async (signal = 'SIGTERM') => { proc.kill(signal); return exited; },
+    // Resolves to the exit code (or signal); asked to stop with SIGTERM, the server must exit 0.
+    stop: async (signal = 'SIGTERM') => {
+      stopping = true;
+      proc.kill(signal);
+      const code = await exited;
+      if (signal === 'SIGTERM' && code !== 0 && !crashed) check('the server stops cleanly on SIGTERM', false, `(exit ${code}) ${log}`);
+      return code;
+    },
   };
 }
 

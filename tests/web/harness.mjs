@@ -59,7 +59,8 @@ export async function startServer(extraArgs = []) {
     ...extraArgs],
     { stdio: ['ignore', 'ignore', 'pipe'] });
   let log = '';
-  const exited = new Promise((r) => server.on('exit', (code) => r(code)));
+  // Killed by a signal, node gives a null code and the signal's name: report the name.
+  const exited = new Promise((r) => server.on('exit', (code, signal) => r(code ?? signal)));
   const port = await new Promise((resolvePort, reject) => {
     const timer = setTimeout(() => reject(new Error(`the server did not start in 30 s: ${log}`)), 30000);
     server.stderr.on('data', (chunk) => {
@@ -166,23 +167,23 @@ export async function canvasHash(page, selector) {
 // ---- a whole browser test ----
 /**
  * Starts `grainlab serve` (with `serverArgs`) and Chromium, runs `body({server, browser})`,
- * counts a throw as a failed check, always closes both (saying if the server exited badly),
- * and exits with the checks' verdict.
+ * counts a throw as a failed check, always closes both, and exits with the checks' verdict.
+ * The server must exit 0 when stopped: one that crashed during the test (or failed to stop
+ * cleanly) fails it, with its log.
  */
 export async function runBrowserTest(serverArgs, body) {
   const server = await startServer(serverArgs);
   const browser = await launchBrowser();
-  let exitCode = 1;
   try {
     await body({ server, browser });
-    exitCode = finish();
   } catch (error) {
     check('the test runs to its end', false, error.stack);
-    exitCode = finish();
   } finally {
     await browser.close();
     const code = await server.stop();
-    if (code !== 0) console.log(`note: the server exited with ${code}\n${server.log()}`);
+    if (!check('the server ran to the end of the test and stopped cleanly', code === 0, `exit ${code}`)) {
+      console.log(server.log());
+    }
   }
-  process.exit(exitCode);
+  process.exit(finish());
 }
