@@ -88,6 +88,11 @@ MEANINGS = {
     "output.vtk": ("", "write ParaView frames to DIR/vtk (docs/paraview.md)"),
     "output.vtk_every": ("", "a frame at every vtk_every-th sample (and at the end)"),
     "output.checkpoint_every_s": ("s", "wall time between checkpoints of runs that keep them"),
+    "output.stage_checkpoints": ("", "keep the state at each stage's end in DIR/stages/, to start other runs from (default: on with dem, off with box2d; docs/prepared-specimens.md)"),
+    "start_from": ("", "start from a prepared specimen instead of preparing one: give `run` with `stage`, or `checkpoint` (docs/prepared-specimens.md)"),
+    "start_from.run": ("", "the directory of a run that kept its stages' ends"),
+    "start_from.stage": ("", "the stage whose end to start from; the scene's stages up to it are skipped"),
+    "start_from.checkpoint": ("", "a stage checkpoint file itself (instead of `run` and `stage`)"),
 }
 
 

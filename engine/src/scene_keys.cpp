@@ -153,6 +153,14 @@ std::vector<std::pair<std::string, json>> sceneKeyExemplars() {
            {"output",
             {{"sample_interval", 0.001}, {"sample_strain", 0.002}, {"fabric", true}, {"histograms", true},
              {"histogram_bins", 36}, {"vtk", false}, {"vtk_every", 1}, {"checkpoint_every_s", 60}}}});
+  // start_from names files that are read when the run starts, not when the scene is parsed.
+  json fromRun = membraneScene(json::array({{{"type", "isotropic"}, {"name", "consolidation"}}, {{"type", "biaxial"}}}));
+  fromRun["start_from"] = {{"run", "prepared-run"}, {"stage", "consolidation"}};
+  fromRun["output"] = {{"stage_checkpoints", false}};
+  scenes.emplace_back("started from a run's stage, no stage checkpoints", fromRun);
+  json fromFile = membraneScene(json::array({{{"type", "isotropic"}}, {{"type", "biaxial"}}}));
+  fromFile["start_from"] = {{"checkpoint", "prepared-run/stages/consolidation.checkpoint"}};
+  scenes.emplace_back("started from a checkpoint file", fromFile);
   scenes.emplace_back("elongated assembly, every recipe key",
                       json{{"assembly",
                             {{"shape", "elongated"}, {"disc_radius", 0.002}, {"long_axes", {0.0045, 0.005, 0.007}},
