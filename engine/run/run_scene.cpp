@@ -59,6 +59,10 @@ struct LoopState {
     a(summary.notes);
     a(summary.checkpoints);
     a(summary.checkpointSeconds);
+    // The stages' ends kept so far stay on disk: a resumed run counts them as its own.
+    a(summary.stageCheckpoints);
+    a(summary.stageCheckpointBytes);
+    a(summary.stageCheckpointSeconds);
   }
 };
 
