@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -8,6 +7,7 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/validity.hpp"
+#include "validity_format.hpp"
 #include "grainlab/world.hpp"
 #include "run_context.hpp"
 #include "validity_reference.hpp"
@@ -17,11 +17,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
 
 std::string runCostField(const std::string& costField) {
   // RunCost names stage fields "stages.2.strain_rate"; the parser's errors "stages[2].strain_rate".
@@ -173,14 +168,14 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     std::vector<Driver> drivers{{"assembly.specimen_diameter", a.specimenDiameter, reference::kSpecimenDiameter, -1}};
     for (const Driver& p : particleSizeDrivers(scene, 1)) drivers.push_back(p);
     envelope.check("particles_across", across, drivingField(drivers),
-                   g(across) + " particles of " + g(1e3 * d) + " mm across a " + g(1e3 * a.specimenDiameter) +
+                   threeSignificant(across) + " particles of " + threeSignificant(1e3 * d) + " mm across a " + threeSignificant(1e3 * a.specimenDiameter) +
                        " mm specimen");
     if (a.boundaryRadius > 0) {
       const double automatic = 0.5 * smallestWidth;
       const double ratio = std::max(a.boundaryRadius / automatic, automatic / a.boundaryRadius);
       envelope.check("boundary_particle_ratio", ratio, "assembly.boundary_radius",
-                     "ring discs of " + g(1e3 * a.boundaryRadius) + " mm beside the automatic " +
-                         g(1e3 * automatic) + " mm (half the narrowest grain)");
+                     "ring discs of " + threeSignificant(1e3 * a.boundaryRadius) + " mm beside the automatic " +
+                         threeSignificant(1e3 * automatic) + " mm (half the narrowest grain)");
     }
   }
   // Explicit particles: the spread of their sizes, blamed on the one furthest (in log) from
@@ -199,7 +194,7 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     envelope.check("size_ratio", spread,
                    "particles[" + std::to_string(odd) + "]." +
                        (scene.particles[odd].shape == ShapeKind::Disc ? "radius" : "vertices"),
-                   "the largest particle is " + g(spread) + " times the smallest");
+                   "the largest particle is " + threeSignificant(spread) + " times the smallest");
   }
 }
 
@@ -232,7 +227,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
     if (deepestParticle >= 0) {
       const char* key = scene.particles[deepestParticle].shape == ShapeKind::Disc ? "radius" : "vertices";
       envelope.check("initial_overlap", deepest, "particles[" + std::to_string(deepestParticle) + "]." + key,
-                     "particle " + std::to_string(deepestParticle) + " starts " + g(deepest) +
+                     "particle " + std::to_string(deepestParticle) + " starts " + threeSignificant(deepest) +
                          " of its radius inside a neighbour or wall");
     }
     for (int k = 0; k < explicitCount; ++k) {
@@ -240,10 +235,10 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       const double moved = scene.particles[k].velocity.norm() * dt / r, turned = std::abs(scene.particles[k].spin) * dt;
       if (moved >= turned && moved > 0)
         envelope.check("initial_motion_per_step", moved, "particles[" + std::to_string(k) + "].velocity",
-                       "particle " + std::to_string(k) + " moves " + g(moved) + " of its radius per step");
+                       "particle " + std::to_string(k) + " moves " + threeSignificant(moved) + " of its radius per step");
       else if (turned > 0)
         envelope.check("initial_motion_per_step", turned, "particles[" + std::to_string(k) + "].spin",
-                       "particle " + std::to_string(k) + "'s surface moves " + g(turned) + " of its radius per step");
+                       "particle " + std::to_string(k) + "'s surface moves " + threeSignificant(turned) + " of its radius per step");
     }
   }
 
@@ -251,7 +246,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
     const double ratio = dt / world.criticalTimestep();
     const std::string field = scene.solver.timestep > 0 ? "solver.timestep" : "solver.timestep_safety";
     envelope.check("timestep_ratio", ratio, field,
-                   "timestep " + g(dt) + " s is " + g(ratio) + " of the critical " + g(world.criticalTimestep()) + " s");
+                   "timestep " + threeSignificant(dt) + " s is " + threeSignificant(ratio) + " of the critical " + threeSignificant(world.criticalTimestep()) + " s");
   }
 
   for (size_t k = 0; k < scene.stages.size(); ++k) {
@@ -267,7 +262,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
                                               {"material.normal_stiffness", scene.material.normalStiffness,
                                                reference::kNormalStiffness, -1}});
       envelope.check("overlap", overlap, field,
-                     "the mean contact overlap at " + g(stress) + " Pa is " + g(overlap) + " of the radius");
+                     "the mean contact overlap at " + threeSignificant(stress) + " Pa is " + threeSignificant(overlap) + " of the radius");
     }
 
     // The inertial number at the requested rate: I = ε̇ d √(ρ/p). Compaction is not meant to
@@ -280,7 +275,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       for (const Driver& p : particleSizeDrivers(scene, 1)) drivers.push_back(p);
       const std::string field = drivingField(drivers);
       envelope.check("inertial_number", inertial, field,
-                     "the inertial number at " + g(rate) + " /s and " + g(stress) + " Pa is " + g(inertial) +
+                     "the inertial number at " + threeSignificant(rate) + " /s and " + threeSignificant(stress) + " Pa is " + threeSignificant(inertial) +
                          ": the " + std::string(toString(s.type)) + " stage is no longer quasi-static");
       // The lateral servo moves the ring no faster than the quasi-static bound allows, so a
       // stage sheared faster cannot hold σ11 at its target.
@@ -288,8 +283,8 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
                                  s.lateral == StageSpec::Lateral::ConstantStress;
       if (heldLaterally) {
         envelope.check("lateral_servo_inertial_number", inertial, field,
-                       "the axial rate asks for an inertial number of " + g(inertial) +
-                           ", above the lateral servo's cap: σ11 will not be held at " + g(stress) + " Pa");
+                       "the axial rate asks for an inertial number of " + threeSignificant(inertial) +
+                           ", above the lateral servo's cap: σ11 will not be held at " + threeSignificant(stress) + " Pa");
       }
     }
 
@@ -299,14 +294,14 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       std::vector<Driver> drivers{{rateField, rate, reference::kRate, 1}};
       for (const Driver& t : timestepDrivers(scene, 1)) drivers.push_back(t);
       envelope.check("strain_per_step", perStep, drivingField(drivers),
-                     "the boundary moves " + g(perStep) + " of a particle radius per step");
+                     "the boundary moves " + threeSignificant(perStep) + " of a particle radius per step");
     }
 
     // The strain between samples (strain-sampled stages).
     if (s.type == StageSpec::Type::Biaxial || s.type == StageSpec::Type::Cyclic ||
         s.type == StageSpec::Type::SimpleShear) {
       envelope.check("strain_per_sample", scene.output.sampleStrain, "output.sample_strain",
-                     "a sample every " + g(scene.output.sampleStrain) + " of strain");
+                     "a sample every " + threeSignificant(scene.output.sampleStrain) + " of strain");
     }
 
     if (s.type == StageSpec::Type::Rotation) {
@@ -325,7 +320,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       for (const Driver& t : timestepDrivers(scene, 1)) perStepDrivers.push_back(t);
       const double perStep = degPerSecond * dt;
       envelope.check("rotation_per_step", perStep, drivingField(perStepDrivers),
-                     "the strain-rate direction turns " + g(perStep) + "° per step");
+                     "the strain-rate direction turns " + threeSignificant(perStep) + "° per step");
       const double spacing = scene.output.sampleInterval > 0 ? scene.output.sampleInterval : s.duration / 180;
       const double perSample = degPerSecond * spacing;
       std::vector<Driver> perSampleDrivers = rotation;
@@ -333,7 +328,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
         perSampleDrivers.push_back({"output.sample_interval", scene.output.sampleInterval,
                                     reference::kRotationDuration / 180, 1});
       envelope.check("rotation_per_sample", perSample, drivingField(perSampleDrivers),
-                     "the strain-rate direction turns " + g(perSample) + "° between samples");
+                     "the strain-rate direction turns " + threeSignificant(perSample) + "° between samples");
     }
   }
 
@@ -407,7 +402,7 @@ std::string likelyCause(const Scene& scene, const World& world) {
   // Less than halfway to every soft limit: nothing in the scene stands out.
   if (!(envelope.worstRatio() > 0.5)) return {};
   const ValidityWarning& w = envelope.worst();
-  return w.field + " (" + w.quantity + " " + g(w.value) + " against its limit " + g(w.limit) + ": " + w.meaning + ")";
+  return w.field + " (" + w.quantity + " " + threeSignificant(w.value) + " against its limit " + threeSignificant(w.limit) + ": " + w.meaning + ")";
 }
 
 }  // namespace grainlab

@@ -1,21 +1,15 @@
 // The validity envelope's table: each quantity, its two limits and why (docs/validity.md
 // gives the measurements behind them).
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "grainlab/validity.hpp"
+#include "validity_format.hpp"
 
 namespace grainlab {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::infinity();
-
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
 
 }  // namespace
 
@@ -90,8 +84,8 @@ std::string ValidityAssessment::refusalMessage() const {
   std::string out;
   for (const ValidityWarning& r : refusals) {
     const ValidityQuantity& q = validityQuantity(r.quantity);
-    out += (out.empty() ? "" : "; ") + r.field + ": " + r.quantity + " " + g(r.value) + (q.upper ? " > " : " < ") +
-           g(r.limit) + ": " + r.meaning;
+    out += (out.empty() ? "" : "; ") + r.field + ": " + r.quantity + " " + threeSignificant(r.value) + (q.upper ? " > " : " < ") +
+           threeSignificant(r.limit) + ": " + r.meaning;
   }
   return out;
 }
@@ -127,8 +121,8 @@ std::string describe(const ValidityWarning& w) {
   bool upper = true;
   for (const ValidityQuantity& q : validityQuantities())
     if (q.name == w.quantity) upper = q.upper;
-  std::string line = "warning: " + w.field + ": " + w.quantity + " " + g(w.value) + (upper ? " > " : " < ") +
-                     g(w.limit);
+  std::string line = "warning: " + w.field + ": " + w.quantity + " " + threeSignificant(w.value) + (upper ? " > " : " < ") +
+                     threeSignificant(w.limit);
   if (w.step >= 0) line += " at step " + std::to_string(w.step);
   return line + ": " + w.meaning;
 }
