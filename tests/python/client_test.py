@@ -2,15 +2,13 @@
 throw-away database): submit a preset, wait for it, fetch its series, which must be the CLI's
 own run of the same preset, bit for bit; a bad scene is refused with the field named."""
 import os
-import re
 import shutil
-import subprocess
-import time
 import unittest
 
 import numpy as np
 
 import grainlab
+from loopback_server import start_loopback_server
 from support import CLI, CLI_RUN, PRESET, WORK
 
 
@@ -20,23 +18,10 @@ class ClientTest(unittest.TestCase):
         cls.dir = os.path.join(WORK, "client")
         shutil.rmtree(cls.dir, ignore_errors=True)
         os.makedirs(cls.dir)
-        cls.log = open(os.path.join(cls.dir, "serve.log"), "w+")
-        cls.server = subprocess.Popen([CLI, "serve", "--host", "127.0.0.1", "--port", "0", "--db",
-                                       os.path.join(cls.dir, "test.db")], stderr=cls.log, stdout=cls.log)
-        port = None
-        for _ in range(200):
-            cls.log.seek(0)
-            m = re.search(r"listening on http://127\.0\.0\.1:(\d+)", cls.log.read())
-            if m:
-                port = m.group(1)
-                break
-            if cls.server.poll() is not None:
-                break
-            time.sleep(0.1)
-        if port is None:
-            cls.tearDownClass()
-            raise RuntimeError("the server did not start")
-        cls.client = grainlab.Client(f"http://127.0.0.1:{port}")
+        cls.server, cls.log, url = start_loopback_server(
+            [CLI, "serve", "--host", "127.0.0.1", "--port", "0", "--db", os.path.join(cls.dir, "test.db")],
+            os.path.join(cls.dir, "serve.log"))
+        cls.client = grainlab.Client(url)
 
     @classmethod
     def tearDownClass(cls):

@@ -3,13 +3,11 @@ token, started here on loopback. Without a token the client is refused with 401;
 read-only one it lists and reads but cannot submit or delete (403); with the full one it
 submits, cancels and deletes. The token never shows in the client's repr."""
 import os
-import re
-import subprocess
 import tempfile
-import time
 import unittest
 
 import grainlab
+from loopback_server import start_loopback_server
 
 SERVER = os.environ["GRAINLAB_SERVER"]
 FULL = "python-client-full-token-0001"
@@ -26,24 +24,10 @@ class ClientTokenTest(unittest.TestCase):
         if scratch:
             os.makedirs(scratch, exist_ok=True)
         cls.dir = tempfile.TemporaryDirectory(dir=scratch)
-        cls.log = open(os.path.join(cls.dir.name, "serve.log"), "w+")
         env = dict(os.environ, GRAINLAB_TOKEN=FULL, GRAINLAB_READ_ONLY_TOKEN=READ)
-        cls.server = subprocess.Popen([SERVER, "--host", "127.0.0.1", "--port", "0", "--db",
-                                       os.path.join(cls.dir.name, "test.db")], stderr=cls.log, stdout=cls.log, env=env)
-        port = None
-        for _ in range(200):
-            cls.log.seek(0)
-            m = re.search(r"listening on http://127\.0\.0\.1:(\d+)", cls.log.read())
-            if m:
-                port = m.group(1)
-                break
-            if cls.server.poll() is not None:
-                break
-            time.sleep(0.1)
-        if port is None:
-            cls.tearDownClass()
-            raise RuntimeError("the server did not start")
-        cls.url = f"http://127.0.0.1:{port}"
+        cls.server, cls.log, cls.url = start_loopback_server(
+            [SERVER, "--host", "127.0.0.1", "--port", "0", "--db", os.path.join(cls.dir.name, "test.db")],
+            os.path.join(cls.dir.name, "serve.log"), env)
 
     @classmethod
     def tearDownClass(cls):
