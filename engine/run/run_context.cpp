@@ -49,7 +49,7 @@ RunContext::~RunContext() = default;
 
 double RunContext::totalWork() const {
   double work = 0;
-  for (const StageSpec& s : scene_.stages) work += isShearing(s.type) ? 4.0 : 1.0;
+  for (const StageSpec& s : scene_.stages) work += stageWork(s.type);
   return work;
 }
 

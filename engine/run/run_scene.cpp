@@ -269,7 +269,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
     try {
       PreparedHistory history;
       loop.stage = loadPreparedSpecimen(scene, *context, history);
-      for (size_t s = 0; s < loop.stage; ++s) loop.workDone += isShearing(scene.stages[s].type) ? 4.0 : 1.0;
+      for (size_t s = 0; s < loop.stage; ++s) loop.workDone += stageWork(scene.stages[s].type);
       loop.timestepNoted = history.timestepNoted;
       summary.notes = history.notes;
     } catch (const std::exception& e) {

@@ -107,7 +107,7 @@ class BiaxialStage : public MembraneStage {
   double progress() const override { return std::min(1.0, axialStrain() / spec_.targetAxialStrain); }
   double sampleCoordinate() const override { return axialStrain(); }
   double sampleSpacing() const override { return sampleStrain_; }
-  double work() const override { return 4.0; }
+  double work() const override { return stageWork(spec_.type); }
   void persist(StateArchive& a) override;
 
  protected:

@@ -14,7 +14,7 @@ class RotationStage : public MembraneStage {
   bool finished() const override { return elapsed() >= spec_.duration * (1 - 1e-12) || timedOut(); }
   double progress() const override { return std::min(1.0, elapsed() / spec_.duration); }
   double sampleSpacing() const override { return sampleSpacing_; }
-  double work() const override { return 4.0; }
+  double work() const override { return stageWork(spec_.type); }
   void persist(StateArchive& a) override;
   /// The prescribed direction of the major principal strain rate now, degrees (unwrapped).
   double directionDeg() const { return spec_.initialDirectionDeg + spec_.rotationRateDeg * elapsed(); }

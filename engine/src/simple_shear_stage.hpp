@@ -13,7 +13,7 @@ class SimpleShearStage : public MembraneStage {
   double progress() const override { return std::min(1.0, shearStrain() / spec_.targetShearStrain); }
   double sampleCoordinate() const override { return shearStrain(); }
   double sampleSpacing() const override { return sampleStrain_; }
-  double work() const override { return 4.0; }
+  double work() const override { return stageWork(spec_.type); }
   void persist(StateArchive& a) override;
 
  private:

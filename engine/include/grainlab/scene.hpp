@@ -61,6 +61,9 @@ inline bool isShearing(StageSpec::Type t) {
          t == StageSpec::Type::SimpleShear;
 }
 
+/// A stage's share of a run's work, for progress: a shearing stage counts four others.
+inline double stageWork(StageSpec::Type t) { return isShearing(t) ? 4.0 : 1.0; }
+
 /// A stage type's name in scene JSON ("free", "compaction", "isotropic", "biaxial",
 /// "rotation", "cyclic", "simple_shear"): one table for the parser, the studies and the docs.
 std::string_view toString(StageSpec::Type type);
