@@ -107,19 +107,21 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     };
     const CheckpointPolicy policy =
         factory ? CheckpointPolicy{} : CheckpointPolicy{checkpoint, scene.output.checkpointEverySeconds, run.scene.dump()};
+    // Like `grainlab run`, it keeps its stages' ends in stages/ (a sweep's "prepare" starts from them).
+    const std::string stageDirectory = factory ? std::string() : work.string();
     RunSummary summary;
     std::unique_ptr<RunObserver> observer;
     if (resumable) {
       observer = makeObserver();
       ProgressRelay relay(*observer, progress, run.id);
-      summary = resumeRun(checkpoint, relay, policy);
+      summary = resumeRun(checkpoint, relay, policy, stageDirectory);
       result.resumed = !summary.refused;
     }
     if (!result.resumed) {  // nothing to resume from, or its checkpoints could not be read
       if (resumable) startOver();
       observer = makeObserver();
       ProgressRelay relay(*observer, progress, run.id);
-      summary = runScene(scene, relay, {}, policy);
+      summary = runScene(scene, relay, {}, policy, stageDirectory);
     }
     result.status = summary.status;
     result.error = summary.error;

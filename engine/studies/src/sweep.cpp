@@ -2,11 +2,13 @@
 
 #include <exception>
 #include <fstream>
+#include <optional>
 
 #include "grainlab/errors.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/studies/cluster.hpp"
 #include "grainlab/studies/run_batch.hpp"
+#include "grainlab/studies/sweep_preparation.hpp"
 #include "grainlab/studies/sweep_table.hpp"
 
 namespace grainlab::studies {
@@ -48,8 +50,10 @@ void checkResumable(const fs::path& dir, const SweepSpec& spec) {
 
 SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& options, const Cluster& cluster) {
   // Every rank expands the same spec to the same runs, so only indices travel over MPI.
-  const std::vector<SweepRun> runs = expandSweep(spec);
+  std::vector<SweepRun> runs = expandSweep(spec);
   const fs::path runsDir = options.outDir / "runs";
+  std::optional<SweepPreparation> preparation;
+  if (spec.prepare) preparation = prepareSweep(spec, runs, options.outDir);  // refuses before anything is written
 
   std::exception_ptr refusal;
   if (cluster.isRoot()) {
@@ -64,6 +68,15 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& options, const 
   if (!cluster.agree(refusal == nullptr)) {
     if (refusal) std::rethrow_exception(refusal);
     return {};
+  }
+
+  if (preparation) {
+    // A batch is collective, so under MPI every specimen exists before any run starts from one.
+    BatchOptions prepareOptions;
+    prepareOptions.jobs = options.jobs;
+    prepareOptions.progress = options.progress;
+    prepareOptions.label = "prepare";
+    runBatch(preparation->specimens, prepareOptions, cluster);
   }
 
   std::vector<BatchRun> batch;

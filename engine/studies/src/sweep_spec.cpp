@@ -76,13 +76,22 @@ std::string describe(const std::vector<std::pair<std::string, nlohmann::json>>& 
 SweepSpec parseSweepSpec(const nlohmann::ordered_json& spec) {
   if (!spec.is_object()) throw SceneError("(spec)", "a sweep spec is a JSON object with base, vary and mode");
   for (const auto& [key, value] : spec.items()) {
-    if (key != "base" && key != "vary" && key != "mode" && key != "name")
-      throw SceneError(key, "unknown key (a sweep spec has base, vary, mode and name)");
+    if (key != "base" && key != "vary" && key != "mode" && key != "name" && key != "prepare")
+      throw SceneError(key, "unknown key (a sweep spec has base, vary, mode, name and prepare)");
   }
   SweepSpec out;
   out.source = spec;
   if (!spec.contains("base")) throw SceneError("base", "missing: give {\"preset\": NAME} or a scene");
   out.base = resolveBase(spec["base"]);
+  if (spec.contains("prepare")) {  // checked against the runs by prepareSweep
+    const auto& prepare = spec["prepare"];
+    const bool form = prepare.is_object() && prepare.size() <= 1 && (prepare.empty() || prepare.contains("stage"));
+    if (!form) throw SceneError("prepare", "give {\"stage\": NAME}, or {} for the stage before the first shearing stage");
+    if (prepare.contains("stage") && (!prepare["stage"].is_string() || prepare["stage"].get<std::string>().empty()))
+      throw SceneError("prepare.stage", "must be a stage's name");
+    out.prepare = true;
+    out.prepareStage = prepare.value("stage", std::string());
+  }
 
   const std::string mode = spec.contains("mode") && spec["mode"].is_string() ? spec["mode"].get<std::string>() : "";
   if (!spec.contains("mode") || mode == "grid") out.mode = SweepMode::Grid;

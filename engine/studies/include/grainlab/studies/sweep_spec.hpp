@@ -3,7 +3,8 @@
 // them. `grainlab sweep` reads one from a spec file (docs/sweeps.md):
 //   { "base": { "preset": "circular-quick" } | SCENE,
 //     "vary": { "material.friction": [0.3, 0.5], "seed": [1, 2, 3] },
-//     "mode": "grid" | "zip" }
+//     "mode": "grid" | "zip",
+//     "prepare": { "stage": "consolidation" } }      (optional: one specimen per seed)
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -29,6 +30,8 @@ struct SweepSpec {
   nlohmann::json base;            ///< the base scene (a preset already resolved)
   std::vector<SweepAxis> axes;    ///< in the order of "vary"
   SweepMode mode = SweepMode::Grid;
+  bool prepare = false;           ///< "prepare": each seed's specimen made once (sweep_preparation.hpp)
+  std::string prepareStage;       ///< its stage; empty = the stage before the first shearing stage
 };
 
 /// One run of a sweep: its scene and the values it was given.
