@@ -11,11 +11,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-case "$has_mpi" in 1|ON|TRUE|True|true|YES) ;; *)
-  fail "this build has no MPI (find_package(MPI) failed): run ./scripts/setup, which installs libopenmpi-dev" ;;
-esac
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1
+source "$(dirname "$0")/mpi_test_env.sh"
 
 # The preset shears at strain_rate 1.0: the first rate is its own, the second another.
 cat > "$tmp/prepared.json" <<'JSON'
