@@ -21,6 +21,13 @@ std::string num(double v) {
   return b;
 }
 
+// For messages: as the user would write it.
+std::string shortNum(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
 // One axis of the box: a wall at each end or none.
 struct Side {
   std::optional<double> wall;  // m
@@ -49,7 +56,7 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
   if (held > 0)
     throw ExportRefused(std::to_string(held) + " fixed or kinematic particles (particles[].motion)");
   if (s.material.localDamping > 0 && !options.withoutLocalDamping)
-    throw ExportRefused("material.local_damping = " + num(s.material.localDamping) +
+    throw ExportRefused("material.local_damping = " + shortNum(s.material.localDamping) +
                         ": LAMMPS has no Cundall local damping (--without-local-damping exports without it)");
   if (!options.steps) {
     for (std::size_t k = s.firstStage; k < scene.stages.size(); ++k) {
@@ -75,7 +82,7 @@ Box boxOf(const StartingSpecimen& s, bool periodic) {
                  : n.x() == 0 && n.y() == 1  ? floor
                  : n.x() == 0 && n.y() == -1 ? top
                                              : throw ExportRefused("wall " + std::to_string(k) + " (normal " +
-                                                                   num(n.x()) + ", " + num(n.y()) +
+                                                                   shortNum(n.x()) + ", " + shortNum(n.y()) +
                                                                    ") is not axis-aligned: fix wall/gran takes x and y planes only");
     if (side.wall) throw ExportRefused("two walls face the same way (wall " + std::to_string(k) + ")");
     side.wall = (n.x() != 0) ? w.point.x() : w.point.y();
