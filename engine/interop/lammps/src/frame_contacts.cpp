@@ -87,6 +87,7 @@ void frameContacts(const DumpFrame& atoms, const DumpFrame& entries, const Local
   const std::size_t m = entries.rows();
   out.contacts.clear();
   out.contacts.reserve(m);
+  out.imageOf.clear();
   const double lx = box.lx(), ly = box.ly();
   for (std::size_t e = 0; e < m; ++e) {
     const std::int64_t line = entries.dataLine + static_cast<std::int64_t>(e);
@@ -145,6 +146,7 @@ void frameContacts(const DumpFrame& atoms, const DumpFrame& entries, const Local
     if (shifted) {
       c.j = static_cast<int>(out.centroids.size());
       out.centroids.push_back(out.centroids[static_cast<std::size_t>(i)] + d);
+      out.imageOf.push_back(j);
     }
     c.normal = normal;
     c.point = out.centroids[static_cast<std::size_t>(i)] + normal * (ri - 0.5 * overlap);

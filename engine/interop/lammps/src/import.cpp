@@ -78,6 +78,24 @@ double strainRateDirectionDeg(const DumpBox& before, const DumpBox& now) {
   return analysis::axialDirectionDeg(deviator);
 }
 
+// contacts_final.csv's columns, as grainlab's runs write them: i and j are particle indices
+// (ascending atom id), l_i and l_j the branch vectors from each centroid (j's image across a
+// periodic boundary) to the contact point.
+std::string contactRows(const FrameContacts& c) {
+  std::string text = "i,j,px,py,nx,ny,fn,ft,lix,liy,ljx,ljy\n";
+  for (const ContactRecord& k : c.contacts) {
+    const Vec2 li = k.point - c.centroids[static_cast<std::size_t>(k.i)];
+    const Vec2 lj = k.point - c.centroids[static_cast<std::size_t>(k.j)];
+    // An image's index stands for its atom: the atom j whose image it is.
+    int j = k.j;
+    if (j >= c.particles) j = c.imageOf[static_cast<std::size_t>(j - c.particles)];
+    text += std::to_string(k.i) + "," + std::to_string(j) + "," + num(k.point.x()) + "," + num(k.point.y()) + "," +
+            num(k.normal.x()) + "," + num(k.normal.y()) + "," + num(k.fn) + "," + num(k.ft) + "," + num(li.x()) + "," +
+            num(li.y()) + "," + num(lj.x()) + "," + num(lj.y()) + "\n";
+  }
+  return text;
+}
+
 std::string particleRows(const FrameContacts& c) {
   std::string text = "id,shape,x,y,angle,vx,vy,spin,radius,boundary\n";
   for (int k = 0; k < c.particles; ++k) {
@@ -136,12 +154,11 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
     histogramWriter.onStart(noScene, noWorld);
 
     DumpFrame atoms, entries;
-    FrameContacts contacts;
+    FrameContacts contacts, last;  // this frame's, and the one before (the last at the end)
     analysis::PolarHistograms histograms;
     histograms.bins = options.histogramBins;
     std::vector<unsigned char> inside;
     DumpBox firstBox, previousBox;
-    std::string lastParticles;
     using Id = SeriesColumnId;
     constexpr auto at = columnIndex;
     for (;;) {
@@ -235,20 +252,21 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
       }
       series << formatSeriesRow(s) << '\n';
       histogramWriter.onSample(s, noWorld);
-      lastParticles = particleRows(contacts);
       if (options.framesEvery > 0 && report.frames % options.framesEvery == 0)
-        writeFileAtomically((work / "frames" / (std::to_string(s.step) + ".csv")).string(), lastParticles);
+        writeFileAtomically((work / "frames" / (std::to_string(s.step) + ".csv")).string(), particleRows(contacts));
       if (report.frames == 0) report.firstTimestep = s.step;
       report.lastTimestep = s.step;
       report.particles = contacts.particles;
       previousBox = box;
       ++report.frames;
+      std::swap(contacts, last);
     }
     if (report.frames == 0) throw DumpError(atomStream.firstPath() + ":1: no whole frame to import");
     series.close();
     if (!series) throw std::runtime_error("cannot write " + (work / "series.csv").string());
     histogramWriter.onFinish(RunSummary{}, noWorld);
-    writeFileAtomically((work / "particles_final.csv").string(), lastParticles);
+    writeFileAtomically((work / "particles_final.csv").string(), particleRows(last));
+    writeFileAtomically((work / "contacts_final.csv").string(), contactRows(last));
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     nlohmann::json summary = {{"origin", "lammps"},
                               {"status", "completed"},

@@ -30,6 +30,7 @@ struct FrameContacts {
   std::vector<double> radii;           ///< m, per atom
   std::vector<Vec2> velocities;        ///< m/s (zero if the dump has no vx, vy)
   std::vector<double> spins;           ///< rad/s (zero without omegaz)
+  std::vector<int> imageOf;            ///< for each image (centroids[particles + k]): its atom's index
   std::vector<ContactRecord> contacts; ///< particle-particle contacts
   double solidArea = 0;                ///< m²: Σ π r²
 };

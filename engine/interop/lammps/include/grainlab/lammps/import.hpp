@@ -4,7 +4,8 @@
 // grainlab's own estimators (contact stress, fabric and anisotropies, θσ by Eq. 7, ω against the
 // cell's strain-rate direction, coordination, void ratio) into DIR/series.csv,
 // DIR/histograms.csv, DIR/frames/STEP.csv (particle frames for replay), DIR/particles_final.csv
-// and DIR/summary.json ("origin": "lammps").
+// and DIR/contacts_final.csv (the last frame's, in grainlab's columns) and DIR/summary.json
+// ("origin": "lammps").
 #include <cstdint>
 #include <optional>
 #include <string>
