@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 #include "grainlab/lammps/dump_reader.hpp"
 #include "grainlab/lammps/frame_contacts.hpp"
@@ -17,10 +20,17 @@ using namespace grainlab::lammps;
 
 namespace {
 
+// A folder of this process's, removed when it exits.
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("lammps_dump_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  static const struct Folder {
+    fs::path path = fs::temp_directory_path() / ("lammps_dump_test_" + std::to_string(::getpid()));
+    Folder() { fs::create_directories(path); }
+    ~Folder() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  } folder;
+  return folder.path;
 }
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
@@ -173,4 +183,20 @@ TEST(LammpsImport, AContactWhoseAtomsAreElsewhereIsRefused) {
   } catch (const DumpError& e) {
     EXPECT_NE(std::string(e.what()).find("do not match"), std::string::npos) << e.what();
   }
+}
+
+TEST(LammpsImport, ANonFiniteForceIsRefusedWithItsLine) {
+  const fs::path dir = scratch();
+  write(dir / "a.dump", atomsFrame(0));
+  std::string c = localFrame(0);
+  c.replace(c.rfind("1 2 1 "), 6, "1 2 1 nan ");
+  c.erase(c.rfind(" 0 0 ") + 1, 2);  // keep seven values: nan replaces fx
+  write(dir / "c.dump", c);
+  try {
+    importLammps({(dir / "a.dump").string(), (dir / "c.dump").string()}, (dir / "none").string());
+    FAIL() << "imported a NaN force";
+  } catch (const DumpError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.dump:10: the contact's force is not finite"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "none"));
 }

@@ -68,6 +68,9 @@ void frameContacts(const DumpFrame& atoms, const DumpFrame& entries, const Local
     }
     out.centroids[k] = Vec2(x, y);
     out.radii[k] = atoms.at(r, cR);
+    if (!std::isfinite(x) || !std::isfinite(y) || !(out.radii[k] > 0) || !std::isfinite(out.radii[k]))
+      fail(atoms, atoms.dataLine + static_cast<std::int64_t>(r),
+           "atom " + std::to_string(out.ids[k]) + ": its position must be finite and its radius positive");
     out.solidArea += kPi * out.radii[k] * out.radii[k];
     if (cVx >= 0 && cVy >= 0) out.velocities[k] = Vec2(atoms.at(r, cVx), atoms.at(r, cVy));
     if (cW >= 0) out.spins[k] = atoms.at(r, cW);
@@ -133,6 +136,9 @@ void frameContacts(const DumpFrame& atoms, const DumpFrame& entries, const Local
     const double overlap = ri + rj - dist;
     if (!(dist > 0) || overlap <= 0) continue;  // touching pairs only
     const Vec2 fNormal(entries.at(e, cFx), entries.at(e, cFy));
+    if (!std::isfinite(fNormal.x()) || !std::isfinite(fNormal.y()) || !std::isfinite(entries.at(e, cP1)) ||
+        !std::isfinite(entries.at(e, cP2)))
+      fail(entries, line, "the contact's force is not finite (a diverged run?)");
     const double fSize = fNormal.norm();
     Vec2 normal = fSize > 0 ? Vec2(-fNormal / fSize) : Vec2(d / apart);
     if (normal.dot(d) < 0) normal = -normal;  // a pulling dashpot points the force the other way
