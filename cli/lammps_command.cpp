@@ -167,6 +167,9 @@ int importLammpsCommand(const std::vector<std::string>& args) {
   } catch (const lammps::DumpError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
+  } catch (const std::runtime_error& e) {  // a file that cannot be read or written, a folder in the way
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
   }
   return 0;
 }

@@ -200,3 +200,17 @@ TEST(LammpsImport, ANonFiniteForceIsRefusedWithItsLine) {
   }
   EXPECT_FALSE(fs::exists(dir / "none"));
 }
+
+TEST(LammpsImport, AFolderThatIsNotAnEarlierImportIsNotReplaced) {
+  const fs::path dir = scratch();
+  write(dir / "a.dump", atomsFrame(0));
+  write(dir / "c.dump", localFrame(0));
+  fs::create_directories(dir / "precious");
+  write(dir / "precious" / "notes.txt", "keep me");
+  EXPECT_THROW(importLammps({(dir / "a.dump").string(), (dir / "c.dump").string()}, (dir / "precious").string()),
+               std::runtime_error);
+  EXPECT_TRUE(fs::exists(dir / "precious" / "notes.txt"));
+  // An earlier import is replaced.
+  importLammps({(dir / "a.dump").string(), (dir / "c.dump").string()}, (dir / "imported").string());
+  EXPECT_EQ(importLammps({(dir / "a.dump").string(), (dir / "c.dump").string()}, (dir / "imported").string()).frames, 1);
+}

@@ -112,6 +112,17 @@ std::string particleRows(const FrameContacts& c) {
 ImportReport importLammps(const std::vector<std::string>& dumps, const std::string& outDir, const ImportOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   if (dumps.empty()) throw std::invalid_argument("give the dumps: a dump custom file and a dump local file");
+  // The import replaces outDir at the end: only an empty folder or an earlier import's.
+  const fs::path out(outDir);
+  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out))) {
+    bool earlier = false;
+    try {
+      earlier = nlohmann::json::parse(std::ifstream(out / "summary.json")).value("origin", "") == "lammps";
+    } catch (const std::exception&) {
+    }
+    if (!earlier)
+      throw std::runtime_error(outDir + " exists and is not an earlier LAMMPS import: give a new or empty folder");
+  }
   // Sort the files by the kind of their first frame.
   FrameStream atomStream, entryStream;
   {
@@ -139,7 +150,6 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
   }
 
   // Everything goes to a temporary folder, renamed over outDir at the end.
-  const fs::path out(outDir);
   const fs::path work = out.string() + ".importing";
   fs::remove_all(work);
   fs::create_directories(work);
