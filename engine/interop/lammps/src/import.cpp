@@ -284,6 +284,7 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
                               {"frames", report.frames},
                               {"first_timestep", report.firstTimestep},
                               {"last_timestep", report.lastTimestep},
+                              {"steps", report.lastTimestep},  // LAMMPS's step count at the last frame
                               {"particles", report.particles},
                               {"import_seconds", report.seconds},
                               {"notes", report.warning.empty() ? nlohmann::json::array()
