@@ -8,6 +8,7 @@
 #    equal grainlab's own analysis of the same packing (lammps_fabric_reference) within 1e-12;
 #  - the periodic cell's axial strain is fix deform's closed form, and its strain-rate
 #    direction the one the deform rates give.
+# The periodic run's dumps are imported gzip-compressed.
 # Arguments: grainlab, lammps_fabric_reference, lmp, whether the build has MPI.
 set -euo pipefail
 grainlab=$1 reference=$2 lmp=$3 has_mpi=$4
@@ -35,6 +36,9 @@ run_lammps "$work/walls"
 "$grainlab" export lammps "$work/scene.json" --periodic --deform 0,-0.5,1 --out "$work/periodic" --steps 300 \
   --dump-every 30
 run_lammps "$work/periodic"
-"$grainlab" import lammps "$work/periodic/particles.dump" "$work/periodic/contacts.dump" --out "$work/periodic-imported"
+# Imported gzip-compressed, in the other order: the reader sorts the files by their frames.
+gzip "$work/periodic/particles.dump" "$work/periodic/contacts.dump"
+"$grainlab" import lammps "$work/periodic/contacts.dump.gz" "$work/periodic/particles.dump.gz" \
+  --out "$work/periodic-imported"
 
 python3 "$here/compare_round_trip.py" "$work"
