@@ -14,7 +14,8 @@ constexpr std::size_t kChunk = 1 << 20;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -56,6 +57,23 @@ int DumpFrame::require(std::string_view name, std::string_view what) const {
   throw DumpError(file + ":" + std::to_string(dataLine - 1) + ": no column " + std::string(name) + " (" +
                   std::string(what) + ") in the frame of timestep " + std::to_string(timestep) + " (its columns: " +
                   have + ")");
+}
+
+DumpFrame::Kind dumpKind(const std::string& path) {
+  gzFile f = gzopen(path.c_str(), "rb");
+  if (!f) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  char line[4096];
+  // A frame's header is a dozen lines (TIMESTEP, TIME, UNITS, NUMBER OF, BOX BOUNDS + 3).
+  for (int k = 1; k <= 16 && gzgets(f, line, sizeof line); ++k) {
+    const std::string_view text = trim(line);
+    const bool atoms = text.rfind("ITEM: ATOMS", 0) == 0, entries = text.rfind("ITEM: ENTRIES", 0) == 0;
+    if (atoms || entries) {
+      gzclose(f);
+      return atoms ? DumpFrame::Kind::Atoms : DumpFrame::Kind::Entries;
+    }
+  }
+  gzclose(f);
+  throw DumpError(path + ":1: no ITEM: ATOMS or ITEM: ENTRIES line in the first frame's header: not a LAMMPS text dump");
 }
 
 DumpReader::DumpReader(std::string path) : path_(std::move(path)), buffer_(kChunk) {

@@ -125,14 +125,8 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
   }
   // Sort the files by the kind of their first frame.
   FrameStream atomStream, entryStream;
-  {
-    DumpFrame peek;
-    for (const std::string& path : dumps) {
-      DumpReader reader(path);
-      if (!reader.next(peek)) throw DumpError(path + ":1: no frame in the file");
-      (peek.kind == DumpFrame::Kind::Atoms ? atomStream : entryStream).add(path);
-    }
-  }
+  for (const std::string& path : dumps)
+    (dumpKind(path) == DumpFrame::Kind::Atoms ? atomStream : entryStream).add(path);
   if (atomStream.empty()) throw DumpError(dumps.front() + ":1: no dump custom (ITEM: ATOMS) file among the dumps");
   if (entryStream.empty()) throw DumpError(dumps.front() + ":1: no dump local (ITEM: ENTRIES) file among the dumps");
 

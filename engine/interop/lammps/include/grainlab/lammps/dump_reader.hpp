@@ -51,6 +51,11 @@ struct DumpFrame {
   double at(std::size_t row, int column) const { return values[row * columns.size() + static_cast<std::size_t>(column)]; }
 };
 
+/// The kind of the first frame of the dump at `path`, from its first lines only (no rows read).
+/// Throws DumpError if the file has no ITEM: ATOMS or ITEM: ENTRIES line where a first frame's
+/// header ends, std::runtime_error if it cannot be read.
+DumpFrame::Kind dumpKind(const std::string& path);
+
 class DumpReader {
  public:
   /// Opens `path` (gzip or plain); std::runtime_error naming it if it cannot.
