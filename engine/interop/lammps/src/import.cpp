@@ -132,12 +132,14 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
 
   // export.json beside the particles' dump: the timestep and the density, unless given.
   std::optional<double> timestep = options.timestep, density = options.density;
+  double startTime = 0;  // s: the clock of a specimen exported --from a prepared run
   const fs::path exportJson = fs::path(atomStream.firstPath()).parent_path() / "export.json";
   if (fs::exists(exportJson)) {
     try {
       const nlohmann::json meta = nlohmann::json::parse(std::ifstream(exportJson));
       if (!timestep && meta.contains("timestep_s")) timestep = meta["timestep_s"].get<double>();
       if (!density && meta.contains("material")) density = meta["material"]["density"].get<double>();
+      if (!options.timestep) startTime = meta.value("start_time_s", 0.0);
     } catch (const std::exception& e) {
       throw std::runtime_error(exportJson.string() + ": " + e.what());
     }
@@ -189,7 +191,7 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
 
       Sample s;
       s.step = atoms.timestep;
-      s.time = timestep ? static_cast<double>(atoms.timestep) * *timestep : kMissing;
+      s.time = timestep ? startTime + static_cast<double>(atoms.timestep) * *timestep : kMissing;
       s.stage = "lammps";
       std::vector<double>& v = s.values;
       v.assign(seriesColumns().size(), kMissing);

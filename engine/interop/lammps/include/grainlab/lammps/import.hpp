@@ -17,7 +17,8 @@ namespace grainlab::lammps {
 
 struct ImportOptions {
   LocalColumns columns;
-  /// s per LAMMPS step, for the time column; unset: export.json beside the first dump, if any.
+  /// s per LAMMPS step, for the time column; unset: export.json beside the first dump, if any
+  /// (whose start_time_s, the clock of a specimen exported --from a prepared run, is added).
   std::optional<double> timestep;
   /// kg/m³, for the kinetic energy (discs of mass ρπr²); unset: export.json's, if any.
   std::optional<double> density;
