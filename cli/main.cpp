@@ -14,6 +14,7 @@
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
+#include "lammps_command.hpp"
 #include "run_command.hpp"
 #include "scene_keys_command.hpp"
 #include "paper_command.hpp"
@@ -63,6 +64,11 @@ int usage(std::ostream& out, int code) {
          "                               the HTTP/WebSocket server and dashboard (docs/security.md)\n"
          "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif
+         "  export lammps (SCENE.json | --preset NAME) [--from RUN_DIR[:STAGE]] --out DIR\n"
+         "        [--periodic] [--deform EXX,EYY[,GXY]] [--steps N] [--dump-every N] [--without-local-damping]\n"
+         "                               a disc specimen and its run as a LAMMPS data file and input script\n"
+         "  import lammps DUMPS... --out DIR [--timestep S] [--frames-every N] [--local-columns ROLE=COL,...]\n"
+         "                               a LAMMPS run's dump custom and dump local frames into grainlab's outputs\n"
          "  help                         this text\n";
   return code;
 }
@@ -149,6 +155,10 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return grainlab::runCommand(args);
+    if (command == "export" && !args.empty() && args[0] == "lammps")
+      return grainlab::exportLammpsCommand({args.begin() + 1, args.end()});
+    if (command == "import" && !args.empty() && args[0] == "lammps")
+      return grainlab::importLammpsCommand({args.begin() + 1, args.end()});
     if (command == "resume") return grainlab::resumeCommand(args);
     if (command == "columns") return grainlab::columnsCommand(args);
     if (command == "scene-keys") return grainlab::sceneKeysCommand(args);
