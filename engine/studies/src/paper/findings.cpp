@@ -315,6 +315,19 @@ Finding findBeddingFabric(std::span<const AssemblyResult> runs) {
                                       deg(axialMeanDeg(dirs)) + ")"
                                 : "a_" + term + " below twice the noise floor throughout")));
     }
+    // The one magnitude the paper's text gives for the fabric: a_c for α = 60° "keeping a
+    // constant to the end with some fluctuations around a_c = 0.45". Shown beside it, not
+    // judged: "around" gives no tolerance.
+    if (std::lround(alpha) == 60) {
+      const double late = finiteMean(overStrainFraction(*a, a->shearing.column("a_c"), 0.5, 1.0));
+      Check magnitude = measuredCheck(a->label() + ": a_c against the paper's 0.45",
+                                      "mean a_c over the second half of the shearing", late, -kInf, kInf,
+                                      "mean a_c " + fixed(late, 3) + " from ε22 = half the final strain to the end; "
+                                      "the paper: fluctuating around 0.45");
+      magnitude.diagnostic = true;
+      magnitude.range = kNonNegative;
+      f.checks.push_back(magnitude);
+    }
     startCoef.push_back(a->shearing.at("a_c", 0));
     floors.push_back(floorAt(*a, 0));
   }
