@@ -131,5 +131,38 @@ TEST(MergedFindings, ABoundedCheckKeepsItsIntervalInItsRange) {
   EXPECT_EQ(c.verdict, Verdict::Holds);
 }
 
+TEST(SeedsToResolve, TheLeastEnsembleWhoseIntervalExcludesTheThreshold) {
+  // mean 1, sd 2, threshold 0: need t(n − 1) · 2/√n < 1. At n = 18, t(17) = 2.110 gives
+  // 0.9947 < 1; at n = 17, t(16) = 2.120 gives 1.0284: 18 seeds.
+  EXPECT_EQ(seedsToExclude(1.0, 2.0, 0.0), 18);
+  EXPECT_EQ(seedsToExclude(1.0, 2.0, 2.0), 18);  // the same gap above
+  EXPECT_EQ(seedsToExclude(1.0, 2.0, 1.0), -1);  // on the threshold: no number of seeds
+  EXPECT_EQ(seedsToExclude(1.0, 0.0, 0.0), 2);
+}
+
+TEST(MergedFindings, ANotResolvedCheckSaysHowManySeedsWouldResolveIt) {
+  // Shares 0.85, 0.95, 0.85, 0.95 (mean 0.9, sd 0.0577) judged against "share ≥ 0.89": the
+  // 4-seed interval straddles 0.89.
+  std::vector<std::vector<Finding>> perSeed;
+  std::vector<double> values;
+  for (int k = 0; k < 4; ++k) {
+    Finding f;
+    f.number = 3;
+    Check c = shareCheck(k % 2 ? 0.95 : 0.85);
+    c.holdsFrom = 0.89;
+    f.checks.push_back(c);
+    perSeed.push_back({f});
+    values.push_back(c.value);
+  }
+  const Check merged = mergeSeedFindings(perSeed).front().checks.front();
+  ASSERT_EQ(merged.verdict, Verdict::NotResolved) << merged.measured;
+  const MeanInterval m = meanInterval(values);
+  EXPECT_EQ(merged.seedsToResolve, seedsToExclude(m.mean, m.sd, 0.89));
+  // By hand: gap 0.01, so t(n − 1) · 0.0577/√n < 0.01 first at n = 131 (t ≈ 1.978).
+  EXPECT_GT(merged.seedsToResolve, 120);
+  EXPECT_LT(merged.seedsToResolve, 140);
+  EXPECT_NE(merged.measured.find("seeds would resolve it"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace grainlab::report

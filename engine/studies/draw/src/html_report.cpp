@@ -81,12 +81,13 @@ CsvTable findingsTable(const std::vector<Finding>& findings) {
   // One row per check: its quantity's value (the mean over seeds), 95 % interval and verdict,
   // beside its finding's claim and overall verdict.
   CsvTable t({"number", "claim", "criterion", "verdict", "subject", "quantity", "value", "seeds", "ci_low", "ci_high",
-              "holds_from", "holds_to", "check_verdict", "measured", "note", "interval"});
+              "holds_from", "holds_to", "check_verdict", "measured", "note", "interval", "seeds_to_resolve"});
   for (const Finding& f : findings) {
     for (const Check& c : f.checks) {
       t.addRow({f.number, f.claim, f.criterion, verdictText(f.verdict, seedsOf(f)), c.subject, c.quantity, c.value,
                 c.seeds, c.ciLow, c.ciHigh, c.holdsFrom, c.holdsTo, checkVerdict(c), c.measured, f.note,
-                intervalMethodText(c.interval, c.range.low, c.range.high)});
+                intervalMethodText(c.interval, c.range.low, c.range.high),
+                c.seedsToResolve > 0 ? CsvCell(c.seedsToResolve) : CsvCell(std::nan(""))});
     }
   }
   return t;

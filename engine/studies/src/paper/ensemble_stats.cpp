@@ -34,22 +34,33 @@ MeanInterval meanInterval(const std::vector<double>& values) {
     ++m.n;
   }
   const double nan = std::nan("");
-  m.low = m.high = nan;
+  m.low = m.high = m.sd = nan;
   if (m.n == 0) {
     m.mean = nan;
     return m;
   }
   m.mean = first + offsets / m.n;
+  m.sd = nan;
   if (m.n < 2) return m;
   double squares = 0;
   for (double v : values) {
     if (std::isfinite(v)) squares += (v - m.mean) * (v - m.mean);
   }
-  const double half = studentT975(m.n - 1) * std::sqrt(squares / (m.n - 1) / m.n);
+  m.sd = std::sqrt(squares / (m.n - 1));
+  const double half = studentT975(m.n - 1) * m.sd / std::sqrt(m.n);
   m.low = m.mean - half;
   m.high = m.mean + half;
   m.method = IntervalMethod::StudentT;
   return m;
+}
+
+int seedsToExclude(double mean, double sd, double threshold) {
+  const double gap = std::abs(mean - threshold);
+  if (!(gap > 0) || !std::isfinite(sd)) return -1;
+  for (int n = 2; n <= 100000; ++n) {
+    if (studentT975(n - 1) * sd / std::sqrt(static_cast<double>(n)) < gap) return n;
+  }
+  return -1;
 }
 
 MeanInterval meanIntervalInRange(const std::vector<double>& values, ValueRange range) {
@@ -83,7 +94,7 @@ std::string intervalMethodText(IntervalMethod method, double rangeLow, double ra
 MeanInterval axialMeanInterval(const std::vector<double>& thetasDeg) {
   MeanInterval m;
   const double nan = std::nan("");
-  m.mean = m.low = m.high = nan;
+  m.mean = m.low = m.high = m.sd = nan;
   std::vector<double> doubled;  // 2θ in radians
   for (double t : thetasDeg) {
     if (std::isfinite(t)) doubled.push_back(2.0 * t * std::numbers::pi / 180.0);

@@ -582,6 +582,14 @@ std::vector<Finding> mergeSeedFindings(const std::vector<std::vector<Finding>>& 
         c.verdict = inside ? Verdict::Holds : outside ? Verdict::DoesNotHold : Verdict::NotResolved;
         c.measured = c.quantity + " = " + general(m.mean, 3) + ", 95 % interval " + general(m.low, 3) + " to " +
                      general(m.high, 3) + " over " + std::to_string(m.n) + " seeds" + of;
+        if (c.verdict == Verdict::NotResolved && std::isfinite(m.sd)) {
+          // The threshold the interval straddles decides which way more seeds would tip it.
+          const double threshold = m.low < c.holdsFrom && c.holdsFrom <= m.high ? c.holdsFrom : c.holdsTo;
+          c.seedsToResolve = seedsToExclude(m.mean, m.sd, threshold);
+          if (c.seedsToResolve > 0) {
+            c.measured += "; about " + std::to_string(c.seedsToResolve) + " seeds would resolve it at this spread";
+          }
+        }
       }
     }
     f.checks = std::move(checks);

@@ -30,6 +30,7 @@ struct MeanInterval {
   double mean = 0;           ///< NaN when n = 0
   double low = 0, high = 0;  ///< NaN when n < 2: one run has no interval
   IntervalMethod method = IntervalMethod::None;
+  double sd = 0;             ///< the seeds' standard deviation (plain values); NaN otherwise
   bool hasInterval() const { return n >= 2; }
   double halfWidth() const { return 0.5 * (high - low); }
 };
@@ -48,6 +49,11 @@ MeanInterval meanInterval(const std::vector<double>& values);
 /// the cut interval holds it whenever the t-interval does: the coverage is the t-interval's,
 /// and no end is reported that the quantity cannot take.
 MeanInterval meanIntervalInRange(const std::vector<double>& values, ValueRange range);
+
+/// The seeds an interval would need to exclude `threshold`, if the mean and the seeds' standard
+/// deviation stayed as measured: the least n with t_{0.975}(n − 1) · sd / √n < |mean − threshold|.
+/// −1 when the mean lies on the threshold, or more than 100,000 seeds would be needed.
+int seedsToExclude(double mean, double sd, double threshold);
 
 /// Axial directions (degrees, period 180°), by circular statistics on the doubled angles:
 /// the mean direction is that of the mean resultant of 2θ, in [0, 180); the interval is

@@ -47,6 +47,9 @@ struct Check {
   bool axial = false;    ///< value is an axial direction (degrees): averaged on 2θ
   ValueRange range;      ///< the values the quantity can take; its interval stays inside
   IntervalMethod interval = IntervalMethod::None;  ///< how ciLow, ciHigh were computed
+  /// Not resolved: the seeds that would resolve it if the mean and the seed-to-seed spread
+  /// stayed as measured (seedsToExclude of the threshold inside the interval); −1 otherwise.
+  int seedsToResolve = -1;
 };
 
 struct Finding {
