@@ -54,6 +54,7 @@ int usage(std::ostream& out, int code) {
          "  sweep SPEC.json --out DIR [--jobs N]  every run of a parameter sweep (also under mpirun)\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"         "      [--seeds N]              N seeds per setting, paired on specimens prepared once:\n"
          "                               each setting's bias with its 95% interval and a verdict\n"
+         "      [--presets A,B] [--axes A,B]  other presets; only some axes (e.g. inertial_number)\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"

@@ -43,6 +43,10 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('the reference fidelity sets the shearing rate for discs (I = 1e-4)', (await page.inputValue('#field-strain_rate')) === '0.266');
   const edited = JSON.parse(await page.inputValue('textarea.scene-json'));
   check('the reference fidelity samples every 0.001 of strain', edited.output?.sample_strain === 0.001, JSON.stringify(edited.output));
+  // The draft shears at I = 3e-4, the fastest rate at which the servo holds σ11 (docs/speed-accuracy.md).
+  await page.selectOption('#field-fidelity', 'draft');
+  check('the draft fidelity shears discs at I = 3e-4, inside the servo\'s bound', (await page.inputValue('#field-strain_rate')) === '0.798');
+  await page.selectOption('#field-fidelity', 'reference');
   // The loading paths (docs/loading-paths.md): the form offers each as the shearing stage,
   // with its own fields.
   const pathOptions = await page.$$eval('#field-path option', (options) => options.map((o) => o.value));
