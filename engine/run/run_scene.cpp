@@ -339,6 +339,8 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
     return summary;
   }
   World& world = context->world();
+  summary.resumedFromStep = world.stepCount();
+  summary.resumedFromTime = world.time();
   observer.onEstimate(estimateRunCost(scene, world));
   try {
     observer.onResume(scene, world);
