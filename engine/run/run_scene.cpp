@@ -231,7 +231,8 @@ std::string readNewestCheckpoint(const std::string& path, std::string* note) {
 }  // namespace
 
 Scene checkpointScene(const std::string& path) {
-  StateArchive a(readNewestCheckpoint(path, nullptr));
+  const std::string payload = readNewestCheckpoint(path, nullptr);  // the archive only views it
+  StateArchive a(payload);
   a.section("grainlab run");
   std::string json;
   a(json);
