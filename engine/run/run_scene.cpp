@@ -231,7 +231,8 @@ std::string readNewestCheckpoint(const std::string& path, std::string* note) {
 }  // namespace
 
 Scene checkpointScene(const std::string& path) {
-  StateArchive a(readNewestCheckpoint(path, nullptr));
+  const std::string payload = readNewestCheckpoint(path, nullptr);  // the archive only views it
+  StateArchive a(payload);
   a.section("grainlab run");
   std::string json;
   a(json);
@@ -339,6 +340,8 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
     return summary;
   }
   World& world = context->world();
+  summary.resumedFromStep = world.stepCount();
+  summary.resumedFromTime = world.time();
   observer.onEstimate(estimateRunCost(scene, world));
   try {
     observer.onResume(scene, world);

@@ -57,9 +57,11 @@ TEST(MeanInterval, AxialDirectionsAverageAcrossTheWrap) {
   EXPECT_LT(m.halfWidth(), 90.0);
 }
 
-TEST(EnsembleBand, NarrowsWithMoreSeedsAndVanishesForIdenticalRuns) {
+TEST(EnsembleBand, HalfWidthIsTTimesTheSpreadOverRootNAndVanishesForIdenticalRuns) {
   // Eight synthetic runs whose a_c differs by a fixed offset per seed (spread ±0.02 around the
-  // closed form); the interval over the first 2, 4 and 8 shrinks roughly as t/√n.
+  // closed form). At every strain the runs differ only by the offsets, so the band's half-width
+  // over the first n runs is t_0.975(n−1)·s_n/√n with s_n the offsets' sample deviation:
+  // by hand 12.706·0.020506/√2 = 0.18424, 3.182·0.015588/√4 = 0.024801, 2.365·0.014675/√8 = 0.012271.
   const double offsets[] = {0.012, -0.017, 0.004, 0.019, -0.008, -0.003, 0.015, -0.020};
   std::vector<AssemblyResult> runs;
   for (int s = 0; s < 8; ++s) {
@@ -74,10 +76,18 @@ TEST(EnsembleBand, NarrowsWithMoreSeedsAndVanishesForIdenticalRuns) {
     EXPECT_EQ(b.perRun.size(), n);
     return b.stats.at(10).halfWidth();
   };
-  const double w2 = widthOver(2), w4 = widthOver(4), w8 = widthOver(8);
-  EXPECT_GT(w2, w4);
-  EXPECT_GT(w4, w8);
-  EXPECT_GT(w8, 0);
+  // t quantiles from a statistics table; the sample deviation by its definition.
+  auto expected = [&](size_t n, double t) {
+    double mean = 0, squares = 0;
+    for (size_t s = 0; s < n; ++s) mean += offsets[s] / n;
+    for (size_t s = 0; s < n; ++s) squares += (offsets[s] - mean) * (offsets[s] - mean);
+    return t * std::sqrt(squares / (n - 1)) / std::sqrt(static_cast<double>(n));
+  };
+  // 1e-3 relative: the tables' three decimals of t.
+  EXPECT_NEAR(widthOver(2), expected(2, 12.706), 1e-3 * 0.18424);
+  EXPECT_NEAR(widthOver(4), expected(4, 3.182), 1e-3 * 0.024801);
+  EXPECT_NEAR(widthOver(8), expected(8, 2.365), 1e-3 * 0.012271);
+  EXPECT_NEAR(expected(8, 2.365), 0.012271, 1e-6);  // the hand figure above
 
   std::vector<AssemblyResult> same(5, syntheticRun(AssemblyKind::Circular));
   for (size_t s = 0; s < same.size(); ++s) same[s].seed = static_cast<int>(s) + 1;
