@@ -79,6 +79,13 @@ await runBrowserTest([], async ({ server, browser }) => {
   const facts = await page.locator('.run-header .facts').textContent();
   check('its view names the run it started from', facts.includes(`from run #${parent}'s consolidation`), facts);
 
+  await page.goto(`${base}/#/runs`);
+  const listed = await waitUntil(async () => {
+    const text = await page.locator(`tr[data-run-id="${same}"]`).textContent().catch(() => '');
+    return text.includes(`on #${parent}'s consolidation`) ? text : null;
+  }, 30);
+  check('the runs list says which specimen it ran on', Boolean(listed), listed);
+
   // ---- another shearing, set in the form: to 1 % instead of 2 % ----
   const shorter = await branch(async () => {
     await page.fill('#field-target_axial_strain', '1');
