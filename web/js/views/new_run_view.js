@@ -167,14 +167,16 @@ export function newRunView(root, params) {
       const parent = await api.run(fromId);
       if (destroyed) return;
       const stages = parent.scene?.stages ?? [];
+      // The parser names an unnamed stage by its type (free by default).
+      const nameOf = (stage) => stage.name ?? stage.type ?? 'free';
       // A stage with a later stage to run after it.
       const kept = (parent.specimen_stages ?? []).filter((name) => {
-        const k = stages.findIndex((stage) => stage.name === name);
+        const k = stages.findIndex((stage) => nameOf(stage) === name);
         return k >= 0 && k + 1 < stages.length;
       });
       if (!kept.length) throw new Error(`run #${fromId} kept no stage's end to start from`);
       const firstShearing = stages.findIndex((stage, k) => k > 0 && SHEARING.includes(stage.type));
-      const preparation = firstShearing > 0 ? stages[firstShearing - 1].name : null;
+      const preparation = firstShearing > 0 ? nameOf(stages[firstShearing - 1]) : null;
       specimenText.textContent = `run #${fromId} ${parent.name} (${parent.particles} particles), at the end of stage`;
       replaceChildren(specimenStage, kept.map((name) => h('option', { value: name }, name)));
       specimenStage.value = kept.includes(preparation) ? preparation : kept[kept.length - 1];
