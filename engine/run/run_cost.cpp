@@ -25,16 +25,17 @@ std::string stagePath(size_t k, const char* field) { return "stages." + std::to_
 
 }  // namespace
 
-RunCost estimateRunCost(const Scene& scene, const World& world) {
+RunCost estimateRunCost(const Scene& scene, const World& world, std::size_t firstStage) {
   RunCost cost;
   cost.timestep = world.timestep();
+  cost.firstStage = firstStage;
   cost.particles = world.size();
   cost.particleStepsPerSecond = scene.solver.engine == SolverSpec::Engine::Box2d ? kRigidSpeed
                                 : world.hasPolygons()                           ? kPolygonSpeed
                                                                                 : kDiscSpeed;
   double longest = -1;
   std::string longestField;
-  for (size_t k = 0; k < scene.stages.size(); ++k) {
+  for (size_t k = firstStage; k < scene.stages.size(); ++k) {
     const StageSpec& s = scene.stages[k];
     double time = 0;
     std::string field;

@@ -279,7 +279,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   }
   World& world = context->world();
   summary.particles = world.size();
-  const RunCost cost = estimateRunCost(scene, world);
+  const RunCost cost = estimateRunCost(scene, world, loop.stage);
   observer.onEstimate(cost);
   // The validity envelope: refused past a hard limit, naming the field; warned past a soft one.
   const ValidityAssessment validity = assessValidity(scene, world, cost, std::numeric_limits<double>::infinity());

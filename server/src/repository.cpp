@@ -73,6 +73,8 @@ constexpr const char* kMigrations[] = {
     "ALTER TABLE runs ADD COLUMN estimated_seconds REAL;",
     // 3 -> 4: the validity envelope's warnings, a JSON array (docs/validity.md).
     "ALTER TABLE runs ADD COLUMN warnings TEXT;",
+    // 4 -> 5: the stored run (and its stage) a run started from: start_from.run_id.
+    "ALTER TABLE runs ADD COLUMN origin_run_id INTEGER; ALTER TABLE runs ADD COLUMN origin_stage TEXT;",
 };
 
 // Every statement the server runs, by name.
@@ -80,12 +82,12 @@ namespace sql {
 // The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
 constexpr const char* kListRuns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
-    "FROM runs ORDER BY id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage FROM runs ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
-    "FROM runs WHERE id = :id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage FROM runs WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
 constexpr const char* kHistograms =
@@ -102,8 +104,10 @@ constexpr const char* kLastFrame =
 constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shapes IS NOT NULL";
 
 constexpr const char* kInsertRun =
-    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings) "
-    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings)";
+    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage) "
+    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings, "
+    ":origin_run_id, :origin_stage)";
 constexpr const char* kMarkStarted =
     "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
 constexpr const char* kUpdateProgress =
@@ -172,6 +176,7 @@ RunRecord readRun(StatementUse& use) {
   r.cpuSeconds = optionalAt(use, 15);
   r.estimatedSeconds = optionalAt(use, 16);
   if (!use.isNull(17)) r.warnings = use.textAt(17);
+  if (!use.isNull(18)) r.origin = RunOrigin{use.int64At(18), use.isNull(19) ? std::string() : use.textAt(19)};
   return r;
 }
 
@@ -489,6 +494,8 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
           .bind(":created_at", run.createdAt);
       bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
       use.bindText(":warnings", run.warnings);
+      if (run.origin) use.bind(":origin_run_id", run.origin->runId).bindText(":origin_stage", run.origin->stage);
+      else use.bindNull(":origin_run_id").bindNull(":origin_stage");
       use.run();
       id = w.db.lastInsertId();
     } catch (...) {

@@ -82,10 +82,11 @@ RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& opt
       hub_(hub),
       options_(options),
       run_(options.runFunction ? options.runFunction : RunFunction([](const RunRequest& r, RunObserver& o) {
-        return r.resume ? grainlab::resumeRun(r.checkpoint.path, o, r.checkpoint)
-                        : grainlab::runScene(r.scene, o, {}, r.checkpoint);
+        return r.resume ? grainlab::resumeRun(r.checkpoint.path, o, r.checkpoint, r.stageDirectory)
+                        : grainlab::runScene(r.scene, o, {}, r.checkpoint, r.stageDirectory);
       })),
       checkpointDir_(options.checkpointDir.empty() ? options.db + ".checkpoints" : options.checkpointDir),
+      specimens_(checkpointDir_),
       manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
       startedAt_(unixNow()) {
   requeueStored();
@@ -109,6 +110,7 @@ void RunService::removeCheckpoint(std::int64_t id) const {
 void RunService::requeueStored() {
   std::error_code ec;
   std::filesystem::create_directories(checkpointDir_, ec);
+  specimens_.removeStale();
   for (const RunRecord& listed : repo_.listRuns()) {
     if (listed.status == RunStatus::Interrupted && hasCheckpoint(listed.id)) {
       if (!options_.resumeInterrupted) {
@@ -132,6 +134,7 @@ void RunService::requeueStored() {
     try {
       const auto record = repo_.findRun(listed.id);  // the list leaves the scenes out
       Scene scene = parseScene(nlohmann::json::parse(record->scene));
+      specimens_.pointAtOwnCopy(scene, listed.id);
       const auto submitted = enqueue(listed.id, listed.particles, std::move(scene), hasCheckpoint(listed.id));
       if (submitted == RunManager::Submit::Started || submitted == RunManager::Submit::Queued) continue;
       end.error = "the run queue was full when the server restarted";
@@ -187,8 +190,13 @@ std::int64_t RunService::create(const std::string& body) {
 
   // The parser promises SceneError; anything else still means the scene is bad.
   Scene scene = badSceneAs400([&] { return parseScene(sceneJson); }, "(json)");
-  // start_from names a file on this machine: a client may not have the server read one.
-  if (scene.startFrom) throw ApiError(400, "the server does not start runs from a prepared specimen", "start_from");
+  // A stored run's stage, linked here for this run; never a file the request names.
+  std::optional<StagedSpecimen> specimen;
+  if (scene.startFrom) {
+    RunOrigin origin;
+    specimen.emplace(specimens_.stage(scene, storedRun(scene.startFrom->runId), origin));
+    record.origin = origin;
+  }
 
   const int particles = estimateParticles(scene);
   if (particles > options_.maxParticles)
@@ -200,8 +208,17 @@ std::int64_t RunService::create(const std::string& body) {
   // slot at 0 % for ever: refuse it now, naming the field that drives the cost.
   // Building the world can also refuse the scene (particles overlapping by half at the start).
   // Past the validity envelope's hard limits the results would mean nothing: refused by field.
-  const ValidityAssessment validity =
-      badSceneAs400([&] { return assessSceneValidity(scene, std::numeric_limits<double>::infinity()); }, "(scene)");
+  // A prepared specimen is checked here: missing, unreadable, or one the scene does not fit.
+  const ValidityAssessment validity = badSceneAs400(
+      [&] {
+        try {
+          return assessSceneValidity(scene, std::numeric_limits<double>::infinity());
+        } catch (const SceneError& e) {
+          if (!record.origin) throw;
+          throw SceneError(e.field(), specimens_.withoutPaths(e.reason(), scene, *record.origin));
+        }
+      },
+      "(scene)");
   if (!validity.refusals.empty()) throw ApiError(400, validity.refusalMessage(), validity.refusals.front().field);
   const RunCost& cost = validity.cost;
   if (cost.certainSeconds() > options_.maxRunSeconds)
@@ -229,6 +246,15 @@ std::int64_t RunService::create(const std::string& body) {
     throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
   }
   removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
+  specimens_.remove(id);
+  if (specimen) {
+    try {
+      specimens_.adopt(scene, *specimen, id);
+    } catch (const std::exception& e) {
+      repo_.deleteRun(id).get();
+      throw ApiError(503, std::string("the specimen could not be kept for the run (") + e.what() + ")");
+    }
+  }
 
   if (const auto submitted = enqueue(id, particles, std::move(scene));
       submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
@@ -295,7 +321,8 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
       const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
-      summary = run_(RunRequest{scene, checkpoint, resume}, watched);
+      summary = run_(RunRequest{scene, checkpoint, resume, specimens_.runFolder(id)}, watched);
+      if (stored && stored->origin) summary.error = specimens_.withoutPaths(summary.error, scene, *stored->origin);
       if (summary.status == RunStatus::Interrupted && limit.exceeded() && !run->stopRequested()) {
         summary.status = RunStatus::Failed;
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
@@ -345,6 +372,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   if (run->deleted()) {
     // Queued after the run's last writes, so nothing of it is left behind.
     removeCheckpoint(id);
+    specimens_.remove(id);
     repo_.deleteRun(id);
     hub_.close(id);
     forget(id);
@@ -434,11 +462,26 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
   if (cancelRequested) j["cancel_requested"] = true;
   j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);
+  j["started_from"] = merged.origin ? nlohmann::json{{"run_id", merged.origin->runId}, {"stage", merged.origin->stage}}
+                                    : nlohmann::json(nullptr);
   if (withScene) {
+    j["specimen_stages"] = specimens_.keptStages(merged);
     auto scene = nlohmann::json::parse(merged.scene, nullptr, false);
     j["scene"] = scene.is_discarded() ? nlohmann::json(nullptr) : scene;
   }
   return j;
+}
+
+std::optional<RunRecord> RunService::storedRun(std::int64_t id) {
+  auto run = live(id);
+  if (run && run->deleted()) return std::nullopt;
+  auto record = repo_.findRun(id);
+  if (record && run && !hasEnded(record->status)) {
+    const auto s = run->state();  // the database lags the live state
+    record->status = s.status;
+    record->stage = s.stage;
+  }
+  return record;
 }
 
 RunRecord RunService::require(std::int64_t id) {
@@ -558,6 +601,7 @@ void RunService::remove(std::int64_t id) {
     forget(id);
   }
   removeCheckpoint(id);
+  specimens_.remove(id);
   repo_.deleteRun(id).get();
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "grainlab/server/serve.hpp"
 #include "run_manager.hpp"
 #include "series_format.hpp"
+#include "specimen_source.hpp"
 
 namespace grainlab::server {
 
@@ -33,7 +35,8 @@ class RunService {
   RunService& operator=(const RunService&) = delete;
 
   /// A scene object or {"preset": NAME}; returns the new run's id. 400 for a bad scene (nothing
-  /// stored), 503 past the particle limit, 429 when the queue is full.
+  /// stored), 503 past the particle limit, 429 when the queue is full. A scene may start from a
+  /// stored run's stage (start_from.run_id, SpecimenSource), never from a file it names.
   std::int64_t create(const std::string& body);
   nlohmann::json list();
   /// 404 for an unknown id.
@@ -86,6 +89,8 @@ class RunService {
   void forget(std::int64_t id);
   nlohmann::json runJson(const RunRecord& record, bool withScene);
   RunRecord require(std::int64_t id);
+  /// The run with its live status and stage; nothing if unknown (or being deleted).
+  std::optional<RunRecord> storedRun(std::int64_t id);
 
   Repository& repo_;
   StreamHub& hub_;
@@ -93,6 +98,7 @@ class RunService {
   RunFunction run_;
   SeriesFormat format_;
   std::string checkpointDir_;
+  SpecimenSource specimens_;  ///< the stages' ends runs keep, and the specimens runs start from
   RunManager manager_;
   std::mutex liveMutex_;
   std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;

@@ -151,9 +151,11 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     repo.flush().get();
   }
   {
-    // What a version-1 database looked like: no cpu_seconds, estimated_seconds nor warnings column.
+    // What a version-1 database looked like: no cpu_seconds, estimated_seconds, warnings nor
+    // origin columns.
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
+    db.exec("ALTER TABLE runs DROP COLUMN origin_stage; ALTER TABLE runs DROP COLUMN origin_run_id; "
+            "ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
             "ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
   }
   Repository repo(path);
@@ -164,6 +166,16 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_FALSE(run->cpuSeconds);
   EXPECT_FALSE(run->estimatedSeconds);
   EXPECT_EQ(run->warnings, "[]");  // a run from before the envelope: none recorded
+  EXPECT_FALSE(run->origin);       // nor started from a stored run
+  // Schema 5: the stored run and stage a run started from.
+  RunRecord branched = queued("branched");
+  branched.origin = RunOrigin{id, "consolidation"};
+  const auto branchedId = repo.insertRun(branched).get();
+  const auto stored = repo.findRun(branchedId);
+  ASSERT_TRUE(stored && stored->origin);
+  EXPECT_EQ(stored->origin->runId, id);
+  EXPECT_EQ(stored->origin->stage, "consolidation");
+  EXPECT_TRUE(repo.listRuns().back().origin);
   Database db(path, false);
   EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
 }

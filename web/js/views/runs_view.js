@@ -93,7 +93,8 @@ export function runsView(root) {
 
     function update(run) {
       cells.id.textContent = String(run.id);
-      replaceChildren(cells.name, h('a', { href: `#/run/${run.id}` }, run.name || '(unnamed)'));
+      replaceChildren(cells.name, h('a', { href: `#/run/${run.id}` }, run.name || '(unnamed)'),
+        run.started_from ? h('span', { class: 'hint' }, ` on #${run.started_from.run_id}'s ${run.started_from.stage}`) : null);
       cells.preset.textContent = run.preset ?? 'custom';
       replaceChildren(cells.status, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status));
       replaceChildren(cells.progress, h('span', { class: 'progress' },
