@@ -21,16 +21,23 @@ struct RunCost {
   double boundedTime = 0;
   double timestep = 0;                ///< s
   int particles = 0;
-  double particleStepsPerSecond = 0;  ///< the speed assumed for this kind of scene, one thread
+  /// One thread's particle-steps per second for this kind of scene (discs, polygons, Box2D):
+  /// the fastest and the slowest measured, with a margin (run_cost.cpp), so that the seconds
+  /// below bound the run's CPU time from both sides.
+  double fastestParticleStepsPerSecond = 0, slowestParticleStepsPerSecond = 0;
   /// The first of the scene's stages counted: a run started from a prepared specimen runs only
   /// the stages after the one the specimen ended.
   std::size_t firstStage = 0;
   /// The scene field that drives the cost ("material.normal_stiffness", "stages.2.strain_rate"...).
   std::string field;
   double certainSteps() const { return certainTime / timestep; }
-  double certainSeconds() const { return certainSteps() * particles / particleStepsPerSecond; }
-  double mostSeconds() const { return (certainTime + boundedTime) / timestep * particles / particleStepsPerSecond; }
-  /// One line for people: the steps, the timestep and the estimated wall time.
+  /// The least a run can take on one idle core: the certain steps at the fastest rate.
+  double certainSeconds() const { return certainSteps() * particles / fastestParticleStepsPerSecond; }
+  /// The most: every stage to its time limit, at the slowest rate.
+  double mostSeconds() const {
+    return (certainTime + boundedTime) / timestep * particles / slowestParticleStepsPerSecond;
+  }
+  /// One line for people: the steps, the timestep and the bounds on the time.
   std::string describe() const;
 };
 
