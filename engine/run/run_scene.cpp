@@ -342,7 +342,8 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
   World& world = context->world();
   summary.resumedFromStep = world.stepCount();
   summary.resumedFromTime = world.time();
-  observer.onEstimate(estimateRunCost(scene, world));
+  // The stages still to run, from the one it resumes in (that one counted whole).
+  observer.onEstimate(estimateRunCost(scene, world, loop.stage));
   try {
     observer.onResume(scene, world);
   } catch (const std::exception& e) {

@@ -43,6 +43,17 @@ class StoppingOutput : public RunOutput {
   double progress_ = 0;
 };
 
+// The files of a run, and the cost it announced before its first step.
+class EstimatingOutput : public RunOutput {
+ public:
+  using RunOutput::RunOutput;
+  void onEstimate(const RunCost& cost) override {
+    RunOutput::onEstimate(cost);
+    estimate = cost;
+  }
+  RunCost estimate;
+};
+
 // summary.json without what the wall clock decides.
 nlohmann::json deterministicSummary(const fs::path& dir) {
   nlohmann::json s = nlohmann::json::parse(fileBytes(dir / "summary.json"));
@@ -108,10 +119,14 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
     stops.push_back(second.steps);
   }
   {
-    RunOutput output(stopped.string(), scene, nullptr);
+    EstimatingOutput output(stopped.string(), scene, nullptr);
     const RunSummary last = resumeRun(checkpoint, output, policy);
     ASSERT_EQ(last.status, RunStatus::Completed) << last.error;
     resumedFrom.push_back(last.resumedFromStep);
+    // Resumed in shearing: the estimate counts the stages still to run, not compaction and
+    // consolidation again (those end on a criterion: they would add bounded time).
+    EXPECT_EQ(output.estimate.firstStage, scene.stages.size() - 1);
+    EXPECT_EQ(output.estimate.boundedTime, 0.0);
   }
   // Identical outputs alone cannot tell a resume from a run started afresh (the simulation is
   // deterministic): each resume must have continued from the step where the run before it stopped.
