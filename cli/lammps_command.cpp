@@ -12,6 +12,9 @@
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/starting_specimen.hpp"
+#ifdef GRAINLAB_HAS_SERVER
+#include "grainlab/server/lammps_import.hpp"
+#endif
 
 namespace grainlab {
 namespace {
@@ -103,11 +106,13 @@ int exportLammpsCommand(const std::vector<std::string>& args) {
 
 int importLammpsCommand(const std::vector<std::string>& args) {
   std::vector<std::string> dumps;
-  std::string out;
+  std::string out, db, name;
   lammps::ImportOptions options;
   for (size_t k = 0; k < args.size(); ++k) {
     const bool hasValue = k + 1 < args.size();
     if (args[k] == "--out" && hasValue) out = args[++k];
+    else if (args[k] == "--db" && hasValue) db = args[++k];
+    else if (args[k] == "--name" && hasValue) name = args[++k];
     else if (args[k] == "--timestep" && hasValue) {
       double dt = 0;
       if (!parseNumber(args[++k], dt) || !(dt > 0)) {
@@ -159,11 +164,34 @@ int importLammpsCommand(const std::vector<std::string>& args) {
     std::cerr << "grainlab import lammps: give the dumps (a dump custom and a dump local file) and --out DIR\n";
     return 2;
   }
+  if (!name.empty() && db.empty()) {
+    std::cerr << "grainlab import lammps: --name names the run in the database: give --db FILE too\n";
+    return 2;
+  }
+#ifndef GRAINLAB_HAS_SERVER
+  if (!db.empty()) {
+    std::cerr << "grainlab import lammps: --db needs the server, and this grainlab was built without it\n";
+    return 2;
+  }
+#endif
   try {
-    const lammps::ImportReport r = lammps::importLammps(dumps, out, options);
+    lammps::ImportReport r;
+    std::int64_t runId = 0;
+#ifdef GRAINLAB_HAS_SERVER
+    if (!db.empty()) {
+      const server::LammpsRunImport stored = server::importLammpsRun(dumps, out, db, options, name);
+      r = stored.report;
+      runId = stored.runId;
+    } else
+#endif
+      r = lammps::importLammps(dumps, out, options);
     if (!r.warning.empty()) std::cerr << "warning: " << r.warning << "\n";
     std::cout << "imported " << r.frames << " frames (timesteps " << r.firstTimestep << " to " << r.lastTimestep
               << ", " << r.particles << " particles) into " << out << " in " << r.seconds << " s\n";
+    if (runId > 0) std::cout << "stored as run " << runId << " in " << db << " (origin lammps)\n";
+  } catch (const std::invalid_argument& e) {  // --db without a clock for the rows
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
   } catch (const lammps::DumpError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

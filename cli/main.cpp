@@ -69,7 +69,9 @@ int usage(std::ostream& out, int code) {
          "        [--periodic] [--deform EXX,EYY[,GXY]] [--steps N] [--dump-every N] [--without-local-damping]\n"
          "                               a disc specimen and its run as a LAMMPS data file and input script\n"
          "  import lammps DUMPS... --out DIR [--timestep S] [--frames-every N] [--local-columns ROLE=COL,...]\n"
+         "        [--db FILE [--name NAME]]\n"
          "                               a LAMMPS run's dump custom and dump local frames into grainlab's outputs\n"
+         "                               (and, with --db, into the server's database as a run of origin lammps)\n"
          "  help                         this text\n";
   return code;
 }

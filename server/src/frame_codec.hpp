@@ -1,6 +1,7 @@
 #pragma once
 // The stream's binary particle frame and the static "shapes" message (docs/stream-protocol.md).
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@ inline constexpr std::size_t kContactBytes = 12;   ///< u32 i, u32 j, f32 fn
 /// Encodes the world's current state. `scratch` is reused between calls to avoid allocating
 /// a contact list per frame on the simulation thread.
 std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch);
+
+/// Encodes particles given as arrays (an imported run's frame). A contact whose j is not one of
+/// the particles (a periodic image's index) colours i but draws no chain.
+std::string encodeFrame(std::int64_t step, double time, std::span<const Vec2> positions,
+                        std::span<const double> angles, const std::vector<ContactRecord>& contacts);
 
 /// What a decoder reads back (tests and tools).
 struct DecodedFrame {

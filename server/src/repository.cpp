@@ -75,6 +75,8 @@ constexpr const char* kMigrations[] = {
     "ALTER TABLE runs ADD COLUMN warnings TEXT;",
     // 4 -> 5: the stored run (and its stage) a run started from: start_from.run_id.
     "ALTER TABLE runs ADD COLUMN origin_run_id INTEGER; ALTER TABLE runs ADD COLUMN origin_stage TEXT;",
+    // 5 -> 6: the program that produced the run: 'grainlab', or 'lammps' for an imported LAMMPS run.
+    "ALTER TABLE runs ADD COLUMN produced_by TEXT NOT NULL DEFAULT 'grainlab';",
 };
 
 // Every statement the server runs, by name.
@@ -83,11 +85,11 @@ namespace sql {
 constexpr const char* kListRuns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
-    "origin_run_id, origin_stage FROM runs ORDER BY id";
+    "origin_run_id, origin_stage, produced_by FROM runs ORDER BY id";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
-    "origin_run_id, origin_stage FROM runs WHERE id = :id";
+    "origin_run_id, origin_stage, produced_by FROM runs WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
 constexpr const char* kHistograms =
@@ -105,9 +107,9 @@ constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shap
 
 constexpr const char* kInsertRun =
     "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings, "
-    "origin_run_id, origin_stage) "
+    "origin_run_id, origin_stage, produced_by) "
     "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings, "
-    ":origin_run_id, :origin_stage)";
+    ":origin_run_id, :origin_stage, :produced_by)";
 constexpr const char* kMarkStarted =
     "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
 constexpr const char* kUpdateProgress =
@@ -177,6 +179,7 @@ RunRecord readRun(StatementUse& use) {
   r.estimatedSeconds = optionalAt(use, 16);
   if (!use.isNull(17)) r.warnings = use.textAt(17);
   if (!use.isNull(18)) r.origin = RunOrigin{use.int64At(18), use.isNull(19) ? std::string() : use.textAt(19)};
+  r.producedBy = use.textAt(20);
   return r;
 }
 
@@ -496,6 +499,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
       use.bindText(":warnings", run.warnings);
       if (run.origin) use.bind(":origin_run_id", run.origin->runId).bindText(":origin_stage", run.origin->stage);
       else use.bindNull(":origin_run_id").bindNull(":origin_stage");
+      use.bindText(":produced_by", run.producedBy);
       use.run();
       id = w.db.lastInsertId();
     } catch (...) {

@@ -40,6 +40,9 @@ struct RunRecord {
   std::optional<double> peakPhiMobDeg;
   std::string warnings = "[]";     ///< the validity envelope's, as summary.json's "warnings" (JSON)
   std::optional<RunOrigin> origin; ///< set when it started from a stored run's stage
+  /// The program that produced it: "grainlab", or "lammps" for an imported LAMMPS run
+  /// (`grainlab import lammps --db`). The API's `origin`.
+  std::string producedBy = "grainlab";
 };
 
 /// One row of the series as the engine produced it.

@@ -462,6 +462,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
   if (cancelRequested) j["cancel_requested"] = true;
   j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);
+  j["origin"] = merged.producedBy;
   j["started_from"] = merged.origin ? nlohmann::json{{"run_id", merged.origin->runId}, {"stage", merged.origin->stage}}
                                     : nlohmann::json(nullptr);
   if (withScene) {

@@ -154,7 +154,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     // What a version-1 database looked like: no cpu_seconds, estimated_seconds, warnings nor
     // origin columns.
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN origin_stage; ALTER TABLE runs DROP COLUMN origin_run_id; "
+    db.exec("ALTER TABLE runs DROP COLUMN produced_by; ALTER TABLE runs DROP COLUMN origin_stage; ALTER TABLE runs DROP COLUMN origin_run_id; "
             "ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
             "ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
   }
@@ -167,6 +167,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_FALSE(run->estimatedSeconds);
   EXPECT_EQ(run->warnings, "[]");  // a run from before the envelope: none recorded
   EXPECT_FALSE(run->origin);       // nor started from a stored run
+  EXPECT_EQ(run->producedBy, "grainlab");  // schema 6: every run before it was grainlab's own
   // Schema 5: the stored run and stage a run started from.
   RunRecord branched = queued("branched");
   branched.origin = RunOrigin{id, "consolidation"};
@@ -176,6 +177,9 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_EQ(stored->origin->runId, id);
   EXPECT_EQ(stored->origin->stage, "consolidation");
   EXPECT_TRUE(repo.listRuns().back().origin);
+  RunRecord imported = queued("imported");
+  imported.producedBy = "lammps";
+  EXPECT_EQ(repo.findRun(repo.insertRun(imported).get())->producedBy, "lammps");
   Database db(path, false);
   EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
 }

@@ -57,7 +57,7 @@ export class RunHeader {
     this.progressLabel.textContent = percent(progress);
     this.facts.textContent = [
       stage ? `stage ${stage}` : null,
-      run.preset ? `preset ${run.preset}` : 'custom scene',
+      run.origin === 'lammps' ? 'imported from LAMMPS' : run.preset ? `preset ${run.preset}` : 'custom scene',
       run.started_from ? `from run #${run.started_from.run_id}'s ${run.started_from.stage}` : null,
       `${run.particles} particles`,
       `created ${localTime(run.created_at)}`,

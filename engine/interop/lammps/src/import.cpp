@@ -258,6 +258,7 @@ ImportReport importLammps(const std::vector<std::string>& dumps, const std::stri
       }
       series << formatSeriesRow(s) << '\n';
       histogramWriter.onSample(s, noWorld);
+      if (options.observer) options.observer->onFrame(s, contacts);
       if (options.framesEvery > 0 && report.frames % options.framesEvery == 0)
         writeFileAtomically((work / "frames" / (std::to_string(s.step) + ".csv")).string(), particleRows(contacts));
       if (report.frames == 0) report.firstTimestep = s.step;

@@ -13,7 +13,23 @@
 
 #include "grainlab/lammps/frame_contacts.hpp"
 
+namespace grainlab {
+struct Sample;
+}
+
 namespace grainlab::lammps {
+
+/// Sees each frame as the import analyses it, to keep it somewhere else too (the server's
+/// database: `grainlab import lammps --db`). Called in timestep order while the import runs, so
+/// before it is known to succeed: an observer that stores must undo its work if importLammps
+/// throws.
+class ImportObserver {
+ public:
+  virtual ~ImportObserver() = default;
+  /// `row` is series.csv's row (its histograms, when the frame has contacts, in row.histograms);
+  /// `frame` the frame's discs (ascending LAMMPS id) and contacts.
+  virtual void onFrame(const Sample& row, const FrameContacts& frame) = 0;
+};
 
 struct ImportOptions {
   LocalColumns columns;
@@ -25,6 +41,7 @@ struct ImportOptions {
   /// A particle frame every this many frames (0: none; the last frame is always particles_final.csv).
   int framesEvery = 1;
   int histogramBins = 18;
+  ImportObserver* observer = nullptr;  ///< not owned; may be null
 };
 
 struct ImportReport {
