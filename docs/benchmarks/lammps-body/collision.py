@@ -21,7 +21,7 @@ RESTITUTION = 0.5  # grainlab's restitution for the pile
 ROUNDING = 1e-5    # m
 SPEED = 0.1        # m/s, each body
 GAP = 1e-6         # m between the rounded outlines at the start
-CUT_INNER = 1e-11  # m: the pair style damps until the shells are this far apart
+CUT_INNER = (1e-11, 1e-7)  # m: the pair style damps until the shells are this far apart
 
 INPUT = """# two hexagons meeting head on; written by collision.py
 variable data index data.collision-face
@@ -31,7 +31,8 @@ boundary p p p
 atom_style body rounded/polygon 1 6
 atom_modify map array
 read_data ${{data}}
-pair_style body/rounded/polygon {c_n!r} 0.0 0.0 1.0 {cut_inner!r}
+variable cut_inner index {cut_inner!r}
+pair_style body/rounded/polygon {c_n!r} 0.0 0.0 1.0 ${{cut_inner}}
 pair_coeff * * {k_n!r} 0.0
 comm_modify vel yes
 neighbor 5e-4 bin
@@ -68,15 +69,17 @@ def main():
                    m_eff, 1),
     }
     with open(os.path.join(HERE, "in.collision"), "w") as f:
-        f.write(INPUT.format(c_n=c_n, k_n=K_N, cut_inner=CUT_INNER))
+        f.write(INPUT.format(c_n=c_n, k_n=K_N, cut_inner=CUT_INNER[0]))
     print(f"mass {mass:.6g} kg/m, c_n {c_n:.6g} N s/m (restitution {RESTITUTION} for one "
           f"contact between two such bodies)")
-    for name, (bodies, pair_mass, contacts) in cases.items():
+    for (name, (bodies, pair_mass, contacts)), cut in [(c, x) for x in CUT_INNER
+                                                       for c in cases.items()]:
         data = f"data.collision-{name}"
         write_data(os.path.join(HERE, data), bodies, (-0.01, 0.01, -0.01, 0.01),
                    f"two hexagons, {name} collision, written by collision.py")
-        p = subprocess.run(["lmp", "-var", "data", data, "-in", "in.collision", "-log", "none",
-                            "-nocite"], cwd=HERE, capture_output=True, text=True, check=True)
+        p = subprocess.run(["lmp", "-var", "data", data, "-var", "cut_inner", repr(cut), "-in",
+                            "in.collision", "-log", "none", "-nocite"], cwd=HERE,
+                           capture_output=True, text=True, check=True)
         rows = [l.split() for l in p.stdout.splitlines()]
         start = next(k for k, r in enumerate(rows) if r[:1] == ["Step"])
         table = []
@@ -90,7 +93,7 @@ def main():
         # n contacts, each with k_n and c_n, act like one spring n k_n and one dashpot n c_n
         z = contacts * c_n / (2 * math.sqrt(contacts * K_N * pair_mass))
         expected = math.exp(-z * math.pi / math.sqrt(1 - z * z))
-        print(f"{name}: after the collision v1 = {v1:.6g}, v2 = {v2:.6g} m/s, restitution "
+        print(f"{name}, cut_inner {cut:g} m: after the collision v1 = {v1:.6g}, v2 = {v2:.6g} m/s, restitution "
               f"{e:.4f}; a spring-dashpot with the force at {contacts} contact(s): "
               f"{expected:.4f}")
 

@@ -2,7 +2,7 @@
 input script, and check the geometry LAMMPS will see.
 
     python3 export_pile.py SCENE.json RUN_DIR/particles_final.csv OUT_DIR [--rounding R]
-        [--no-shrink] [--steps N]
+        [--no-shrink] [--steps N] [--ct C]
 
 SCENE.json gives each particle's outline (body frame) and the walls; particles_final.csv
 gives where each particle ended (x, y, angle). The outline is shrunk by the rounding radius
@@ -19,7 +19,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bodies import Body, core_gap, placed_core, shrink, write_data  # noqa: E402
+from bodies import (Body, area_centroid_inertia, core_gap, placed_core, shrink,  # noqa: E402
+                    write_data)
 
 INPUT = """# {n} elongated hexagons of a settled grainlab pile, exported by export_pile.py
 units si
@@ -30,7 +31,8 @@ atom_modify map array
 read_data data.pile
 # c_n from restitution 0.5 for two bodies of the mean mass: 2 zeta sqrt(k m / 2),
 # zeta = -ln e / sqrt(pi^2 + ln^2 e); no cohesion (k_na = 0), cohesion range 1e-7 m
-pair_style body/rounded/polygon {c_n:.6g} 0.0 0.0 1.0 1e-7
+# tangential: only a viscous force -c_t v_t (this version has no Coulomb friction)
+pair_style body/rounded/polygon {c_n:.6g} {c_t:.6g} 0.0 1.0 1e-7
 pair_coeff * * 3e8 0.0
 comm_modify vel yes
 neighbor 5e-4 bin
@@ -44,8 +46,10 @@ fix 5 all wall/body/polygon 3e8 {c_n:.6g} 0.0 xplane {xlo!r} {xhi!r}
 variable speed atom sqrt(vx*vx+vy*vy)
 compute vmax all reduce max v_speed
 compute ymin all reduce min y
-thermo_style custom step ke pe c_vmax c_ymin
+compute ymax all reduce max y
+thermo_style custom step ke pe c_vmax c_ymin c_ymax
 thermo {thermo}
+thermo_modify flush yes
 run {steps}
 """
 
@@ -58,6 +62,7 @@ def main():
     p.add_argument("--rounding", type=float, default=1e-5)
     p.add_argument("--no-shrink", action="store_true")
     p.add_argument("--steps", type=int, default=10000)
+    p.add_argument("--ct", type=float, default=0.0, help="c_t, N s/m (default 0)")
     args = p.parse_args()
     scene = json.load(open(args.scene))
     rows = list(csv.DictReader(open(args.particles)))
@@ -78,11 +83,11 @@ def main():
                + (", cores not shrunk" if args.no_shrink else ""))
     e = 0.5
     zeta = -math.log(e) / math.sqrt(math.pi ** 2 + math.log(e) ** 2)
-    from bodies import area_centroid_inertia
-    mass = sum(2650 * area_centroid_inertia(b.outline)[0] for b in bodies) / len(bodies)
+    mass = sum(2650 * area_centroid_inertia(spec["vertices"])[0]
+               for spec in scene["particles"]) / len(bodies)
     c_n = 2 * zeta * math.sqrt(3e8 * mass / 2)
     with open(os.path.join(args.out, "in.pile"), "w") as f:
-        f.write(INPUT.format(n=len(bodies), c_n=c_n, xlo=xlo, xhi=xhi, steps=args.steps,
+        f.write(INPUT.format(n=len(bodies), c_n=c_n, c_t=args.ct, xlo=xlo, xhi=xhi, steps=args.steps,
                              thermo=max(1, args.steps // 10)))
     cores = [placed_core(b) for b in bodies]
     reach = [max(math.hypot(x, y) for x, y in b.outline) for b in bodies]

@@ -4,7 +4,8 @@ Each case is two bodies at rest, written by bodies.py, and a `run 0` (the abort,
 comes, is in the first force computation). Prints a markdown table; docs/benchmarks.md
 quotes it.
 
-    python3 sweep.py            (needs `lmp` on the PATH; about a minute)
+    python3 sweep.py              (needs `lmp` on the PATH; about a minute)
+    python3 sweep.py --random N   N pairs at random angles whose cores stay apart
 """
 import math
 import os
@@ -13,7 +14,9 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bodies import Body, hexagon, rectangle, write_data  # noqa: E402
+import random  # noqa: E402
+
+from bodies import Body, core_gap, hexagon, rectangle, rotate, shrink, write_data  # noqa: E402
 
 INPUT = """units {units}
 dimension 2
@@ -95,7 +98,43 @@ def cases():
                k, "lj")
 
 
+def random_pairs(count, seed=1):
+    """Hexagons at random angles, the second moved along a random direction until the gap
+    between the cores is (1 - f) rounding diameters: the rounded outlines overlap by f of
+    the diameter, f < 1, so the cores stay apart."""
+    rng = random.Random(seed)
+    a = 1.25 * 0.002
+    h = hexagon(a, a / 1.5)
+    tally = {}
+    for _ in range(count):
+        rr = rng.choice([1e-6, 1e-5, 1e-4])
+        frac = rng.choice([0.01, 0.5, 0.9, 0.999])
+        ai, aj = rng.uniform(0, math.pi), rng.uniform(0, math.pi)
+        th = rng.uniform(0, 2 * math.pi)
+        ci, cj = rotate(shrink(h, rr), ai), rotate(shrink(h, rr), aj)
+        gap = 2 * rr * (1 - frac)
+
+        def apart(s):
+            g = core_gap([(x + s * math.cos(th), y + s * math.sin(th)) for x, y in ci], cj)
+            return g is not None and g >= gap
+
+        lo, hi = 0.0, 4 * a
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if apart(mid) else (mid, hi)
+        bodies = [Body(h, rr, 0, 0, aj), Body(h, rr, hi * math.cos(th), hi * math.sin(th), ai)]
+        outcome = run(bodies, 1.0, "si").split(" (")[0]
+        tally[(frac, outcome)] = tally.get((frac, outcome), 0) + 1
+    print("| overlap / rounding diameter | LAMMPS | pairs |")
+    print("|---:|---|---:|")
+    for (frac, outcome), n in sorted(tally.items()):
+        print(f"| {frac:g} | {outcome} | {n} |")
+
+
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--random":
+        random_pairs(int(sys.argv[2]))
+        return
     print("| case | overlap / rounding diameter | LAMMPS |")
     print("|---|---:|---|")
     for text, frac, bodies, scale, units in cases():
