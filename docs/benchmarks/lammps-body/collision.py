@@ -32,7 +32,8 @@ atom_style body rounded/polygon 1 6
 atom_modify map array
 read_data ${{data}}
 variable cut_inner index {cut_inner!r}
-pair_style body/rounded/polygon {c_n!r} 0.0 0.0 1.0 ${{cut_inner}}
+variable mu index 0.0
+pair_style body/rounded/polygon {c_n!r} 0.0 ${{mu}} 1.0 ${{cut_inner}}
 pair_coeff * * {k_n!r} 0.0
 comm_modify vel yes
 neighbor 5e-4 bin
@@ -72,12 +73,16 @@ def main():
         f.write(INPUT.format(c_n=c_n, k_n=K_N, cut_inner=CUT_INNER[0]))
     print(f"mass {mass:.6g} kg/m, c_n {c_n:.6g} N s/m (restitution {RESTITUTION} for one "
           f"contact between two such bodies)")
-    for (name, (bodies, pair_mass, contacts)), cut in [(c, x) for x in CUT_INNER
-                                                       for c in cases.items()]:
+    # (case, cut_inner, mu): mu = 0.5 shows what the pair style's mu does (a normal
+    # force 1 + mu times the spring's, so a spring (1 + mu) k_n)
+    runs = [(c, x, 0.0) for x in CUT_INNER for c in cases.items()]
+    runs.append((("vertex", cases["vertex"]), CUT_INNER[0], 0.5))
+    for (name, (bodies, pair_mass, contacts)), cut, mu in runs:
         data = f"data.collision-{name}"
         write_data(os.path.join(HERE, data), bodies, (-0.01, 0.01, -0.01, 0.01),
                    f"two hexagons, {name} collision, written by collision.py")
-        p = subprocess.run(["lmp", "-var", "data", data, "-var", "cut_inner", repr(cut), "-in",
+        p = subprocess.run(["lmp", "-var", "data", data, "-var", "cut_inner", repr(cut),
+                            "-var", "mu", repr(mu), "-in",
                             "in.collision", "-log", "none", "-nocite"], cwd=HERE,
                            capture_output=True, text=True, check=True)
         rows = [l.split() for l in p.stdout.splitlines()]
@@ -91,10 +96,11 @@ def main():
         v1, v2 = float(last[3]), float(last[4])
         e = (v2 - v1) / (2 * SPEED)
         # n contacts, each with k_n and c_n, act like one spring n k_n and one dashpot n c_n
-        z = contacts * c_n / (2 * math.sqrt(contacts * K_N * pair_mass))
+        z = contacts * c_n / (2 * math.sqrt(contacts * (1 + mu) * K_N * pair_mass))
         expected = math.exp(-z * math.pi / math.sqrt(1 - z * z))
-        print(f"{name}, cut_inner {cut:g} m: after the collision v1 = {v1:.6g}, v2 = {v2:.6g} m/s, restitution "
-              f"{e:.4f}; a spring-dashpot with the force at {contacts} contact(s): "
+        print(f"{name}, cut_inner {cut:g} m, mu {mu:g}: after the collision v1 = {v1:.6g}, v2 = {v2:.6g} m/s, restitution "
+              f"{e:.4f}; a spring-dashpot with the force at {contacts} contact(s)"
+              f"{' and stiffness (1 + mu) k_n' if mu else ''}: "
               f"{expected:.4f}")
 
 
