@@ -40,6 +40,7 @@ struct RunRecord {
   std::optional<double> peakPhiMobDeg;
   std::string warnings = "[]";     ///< the validity envelope's, as summary.json's "warnings" (JSON)
   std::optional<RunOrigin> origin; ///< set when it started from a stored run's stage
+  std::string study;               ///< the study it belongs to (the sweep it was imported from); empty if none
 };
 
 /// One row of the series as the engine produced it.
