@@ -106,6 +106,8 @@ constexpr const char* kRunIdsNamed = "SELECT id FROM runs WHERE name = :name ORD
 // Imported sweeps and how many of their runs stand in each status (runs_by_study_status).
 constexpr const char* kStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study > '' GROUP BY study, status ORDER BY study";
+constexpr const char* kOneStudyCounts =
+    "SELECT study, status, COUNT(*) FROM runs WHERE study = :study GROUP BY study, status";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
@@ -539,9 +541,10 @@ std::vector<std::int64_t> Repository::runIdsNamed(const std::string& name) {
   return ids;
 }
 
-std::vector<StudyCounts> Repository::studies() {
+std::vector<StudyCounts> Repository::studies(const std::string& only) {
   auto reader = lease();
-  auto use = reader.statement(sql::kStudyCounts).use();
+  auto use = reader.statement(only.empty() ? sql::kStudyCounts : sql::kOneStudyCounts).use();
+  if (!only.empty()) use.bindText(":study", only);
   std::vector<StudyCounts> out;
   while (use.step()) {
     const std::string study = use.textAt(0);

@@ -78,8 +78,9 @@ class Repository {
   std::string queryPlan(const RunQuery& query, bool count);
   /// The ids of the runs with exactly this name (runs_by_name), oldest first.
   std::vector<std::int64_t> runIdsNamed(const std::string& name);
-  /// The studies (imported sweeps) with their runs counted by status, by name.
-  std::vector<StudyCounts> studies();
+  /// The studies (imported sweeps) with their runs counted by status, by name; `only`: just
+  /// that one (none if no run belongs to it).
+  std::vector<StudyCounts> studies(const std::string& only = {});
   std::optional<RunRecord> findRun(std::int64_t id);
   std::vector<SampleRecord> samples(std::int64_t id);
   /// Histogram messages' JSON in sample order; `latestOnly` keeps the last one.

@@ -163,6 +163,14 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (method != "POST") return methodNotAllowed(method, path, "POST");
     return jsonResponse(200, service_.importSweep(request.body));
   }
+  if (seg.size() == 2 && seg[1] == "studies") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    return jsonResponse(200, service_.studies());
+  }
+  if (seg.size() == 3 && seg[1] == "studies") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    return jsonResponse(200, service_.study(std::string(seg[2])));
+  }
   if (seg.size() < 2 || seg[1] != "runs") return noRoute();
 
   if (seg.size() == 2) {

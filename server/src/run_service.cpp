@@ -1,4 +1,5 @@
 #include "run_service.hpp"
+#include "study_summary.hpp"
 #include "sweep_import.hpp"
 
 #include <algorithm>
@@ -521,6 +522,17 @@ nlohmann::json RunService::list(const RunQuery& query) {
           {"limit", query.limit ? nlohmann::json(*query.limit) : nlohmann::json(nullptr)},
           {"next", query.limit && end < page.total ? nlohmann::json("/api/runs?" + runQueryString(query, end))
                                                    : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json RunService::studies() {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StudyCounts& study : repo_.studies()) out.push_back(studyJson(study));
+  return {{"studies", std::move(out)}};
+}
+
+nlohmann::json RunService::study(const std::string& name) {
+  for (const StudyCounts& study : repo_.studies(name)) return studyJson(study);
+  throw ApiError(404, "no study '" + name + "'", "study");
 }
 
 nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }

@@ -42,6 +42,10 @@ class RunService {
   /// {"runs": [...], "total", "offset", "limit", "next"}: the runs the query asks for,
   /// without their scenes; `next` the path of the page after this one, or null.
   nlohmann::json list(const RunQuery& query = {});
+  /// {"studies": [study, ...]} by name (study_summary.hpp); study(name) one of them, 404 if
+  /// no run belongs to it.
+  nlohmann::json studies();
+  nlohmann::json study(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);

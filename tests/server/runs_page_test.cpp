@@ -143,5 +143,30 @@ TEST_F(RunsPageTest, ABadParameterIsA400NamingIt) {
   EXPECT_EQ(getJson("/api/runs?limit=1&q=sweep%2F")["next"], "/api/runs?limit=1&offset=1&q=sweep%2F&order=desc");
 }
 
+TEST_F(RunsPageTest, StudiesCountTheirRunsByStatus) {
+  store(30);  // every tenth failed: 3 of 30
+  RunRecord mine;
+  mine.name = "a run of no study";
+  mine.scene = "{}";
+  app_->repository().insertRun(mine).get();
+  const json studies = getJson("/api/studies")["studies"];
+  ASSERT_EQ(studies.size(), 1u);  // the run of no study is in none
+  const json& sweep = studies[0];
+  EXPECT_EQ(sweep["name"], "sweep");
+  EXPECT_EQ(sweep["runs"], 30);
+  EXPECT_EQ(sweep["by_status"], json({{"completed", 27}, {"failed", 3}}));
+  EXPECT_EQ(sweep["status"], "failed");  // ended, not all of it well
+  EXPECT_EQ(sweep["progress"], 1.0);
+  // Its runs are one link away, and carry their study.
+  const json runs = getJson(sweep["runs_url"].get<std::string>());
+  EXPECT_EQ(runs["total"], 30);
+  EXPECT_EQ(runs["runs"][0]["study"], "sweep");
+  EXPECT_EQ(getJson("/api/studies/sweep"), sweep);
+  const auto unknown = get("/api/studies/nope");
+  EXPECT_EQ(unknown.status, 404);
+  EXPECT_EQ(json::parse(unknown.body)["field"], "study");
+  EXPECT_EQ(getJson("/api/runs?study=nope")["total"], 0);
+}
+
 }  // namespace
 }  // namespace grainlab::server
