@@ -1,19 +1,37 @@
 // The runs list at the scale of a study: with 120 runs stored it shows page 1 of 3 with 50
 // rows, asks the server only for the page it shows (never the whole list), pages on, and its
 // filters and sort are the server's (the request carries them; the rows are what it answered).
-// The state is kept in the address, so a reload shows the same page. No console errors.
-import { check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
+// The state is kept in the address, so a reload shows the same page. An imported sweep's
+// runs show their study, and the study filter lists them. No console errors.
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+import { CLI, check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
 
 const RUNS = 120;
+const SWEPT = 3;    // the first three come from a sweep, imported: the study "tinysweep"
 const ALPHAS = 40;  // named alpha-K; the others beta-K
 const TINY = (name) => ({ name, particles: [{ shape: 'disc', radius: 0.002, position: [0, 0] }],
                           stages: [{ type: 'free', duration: 0.001 }] });
 
-await runBrowserTest(['--max-queued', String(RUNS)], async ({ server, browser }) => {
+const importRoot = mkdtempSync(join(tmpdir(), 'grainlab-runs-pages-'));
+process.on('exit', () => rmSync(importRoot, { recursive: true, force: true }));
+writeFileSync(join(importRoot, 'spec.json'), JSON.stringify({
+  name: 'tinysweep', base: TINY('tiny'), vary: { 'stages.0.duration': [0.001, 0.002, 0.003] } }));
+const swept = spawnSync(CLI, ['sweep', join(importRoot, 'spec.json'), '--out', join(importRoot, 'tinysweep'), '--jobs', '1'],
+  { encoding: 'utf8' });
+check('a three-run sweep to import', swept.status === 0, swept.stderr.slice(-300));
+
+await runBrowserTest(['--max-queued', String(RUNS), '--import-root', importRoot], async ({ server, browser }) => {
   const { base } = server;
   const json = async (path, init) => (await fetch(`${base}${path}`, init)).json();
-  for (let k = 0; k < RUNS; k++) {
-    const name = k % 3 === 0 && k / 3 < ALPHAS ? `alpha-${k / 3}` : `beta-${k}`;
+  const imported = await json('/api/sweeps/import', { method: 'POST', headers: { 'content-type': 'application/json' },
+    body: JSON.stringify({ dir: join(importRoot, 'tinysweep') }) });
+  check('the sweep is imported as runs 1 to 3', JSON.stringify(imported.ids) === '[1,2,3]', JSON.stringify(imported));
+  for (let k = 0; k < RUNS - SWEPT; k++) {
+    const name = k < ALPHAS ? `alpha-${k}` : `beta-${k}`;
     const response = await fetch(`${base}/api/runs`, { method: 'POST', headers: { 'content-type': 'application/json' },
       body: JSON.stringify(TINY(name)) });
     if (response.status !== 201) throw new Error(`POST ${name}: ${response.status} ${await response.text()}`);
@@ -83,6 +101,26 @@ await runBrowserTest(['--max-queued', String(RUNS)], async ({ server, browser })
   await waitUntil(async () => (await rowCount()) === ALPHAS, 30);
   check('a reload keeps the filter and the order (they live in the address)',
     (await page.locator('.filter-name').inputValue()) === 'alpha' && (await names())[0] === 'alpha-0', page.url());
+
+  // A study: its runs carry a tag linking to the list of them, and the study filter asks the
+  // server for them alone.
+  await page.goto(`${base}/#/runs`);
+  await waitUntil(async () => (await rowCount()) === 50, 30);
+  await page.locator('.pager-next').click();
+  await page.locator('.pager-next').click();
+  const tag = page.locator('tr[data-run-id="1"] a.study-tag');
+  await tag.waitFor({ state: 'visible' });
+  check('an imported run shows its study', (await tag.textContent()) === 'tinysweep');
+  const studyOption = await waitUntil(async () => (await page.locator('.filter-study option').allTextContents())
+    .find((t) => t.startsWith('tinysweep')), 15);
+  check('the study filter offers the study with its runs and status', studyOption === 'tinysweep (3 runs, completed)', studyOption);
+  const beforeStudy = listRequests.length;
+  await page.locator('.filter-study').selectOption('tinysweep');
+  await waitUntil(async () => /Page 1 of 1 · 3 runs/.test(await label()), 15);
+  check('choosing it lists its 3 runs, asked of the server',
+    (await rowCount()) === SWEPT && listRequests.slice(beforeStudy).some((q) => q.get('study') === 'tinysweep'),
+    `${await label()}; ${listRequests.slice(beforeStudy).map(String).join(' | ')}`);
+  await screenshot(page, 'runs-pages-study');
 
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('; '));
 });

@@ -62,6 +62,8 @@ export const api = {
     }
     return request('GET', `/api/runs?${query}`);
   },
+  /** [{name, runs, by_status, status, progress, runs_url}]: the imported sweeps. */
+  studies: async () => (await request('GET', '/api/studies')).studies,
   run: (id) => request('GET', runPath(id)),
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,

@@ -1,7 +1,7 @@
-// The runs list: one page of the runs (50), filtered by status, preset and name and sorted on
-// the server (GET /api/runs?limit=&offset=&status=&preset=&q=&sort=&order=), refreshed every
-// two seconds; open, cancel, delete, and pick runs to compare. The page, filters and order
-// live in the address (#/runs?status=failed&page=2) so a reload or a link keeps them.
+// The runs list: one page of the runs (50), filtered by status, preset, study and name and
+// sorted on the server (GET /api/runs?limit=&offset=&status=&preset=&study=&q=&sort=&order=),
+// refreshed every two seconds; open, cancel, delete, and pick runs to compare. The page,
+// filters and order live in the address (#/runs?study=s&page=2): a reload or a link keeps them.
 import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
 import { TERMINAL_STATUSES, duration, localTime, percent, sig } from '../format.js';
@@ -61,7 +61,20 @@ export function runsView(root, params = new URLSearchParams()) {
       clearTimeout(typingTimer);
       typingTimer = setTimeout(() => setFilter('q', nameFilter.value.trim()), NAME_TYPING_MS);
     } });
-  const studyNote = h('span', { class: 'hint study-filter' });
+  const studyFilter = h('select', { 'aria-label': 'study filter', class: 'filter-study',
+    onchange: () => setFilter('study', studyFilter.value) },
+  h('option', { value: '' }, 'any study'));
+  if (state.study) studyFilter.append(h('option', { value: state.study }, state.study));
+  studyFilter.value = state.study;
+  api.studies().then((studies) => {
+    for (const study of studies) {
+      const label = `${study.name} (${study.runs} run${study.runs === 1 ? '' : 's'}, ${study.status})`;
+      const existing = [...studyFilter.options].find((o) => o.value === study.name);
+      if (existing) existing.textContent = label;
+      else studyFilter.append(h('option', { value: study.name }, label));
+    }
+    studyFilter.value = state.study;
+  }).catch(() => {});  // the filter then offers what the address named
 
   // ---- pager ----
   const prevButton = h('button', { type: 'button', class: 'pager-prev', onclick: () => goTo(state.page - 1) }, '‹ Previous');
@@ -74,7 +87,7 @@ export function runsView(root, params = new URLSearchParams()) {
       h('h2', {}, 'Runs'),
       h('a', { class: 'button primary', href: '#/new' }, 'New run'),
       compareButton, message),
-    h('div', { class: 'runs-filters' }, statusFilter, presetFilter, nameFilter, studyNote),
+    h('div', { class: 'runs-filters' }, statusFilter, presetFilter, studyFilter, nameFilter),
     h('table', { class: 'runs' }, h('thead', {}, headRow), tbody),
     emptyState,
     h('div', { class: 'pager' }, prevButton, pageLabel, nextButton));
@@ -187,6 +200,8 @@ export function runsView(root, params = new URLSearchParams()) {
     function update(run) {
       cells.id.textContent = String(run.id);
       replaceChildren(cells.name, h('a', { href: `#/run/${run.id}` }, run.name || '(unnamed)'),
+        run.study ? h('a', { class: 'study-tag', href: `#/runs?study=${encodeURIComponent(run.study)}`,
+          title: `the runs of study ${run.study}` }, run.study) : null,
         run.started_from ? h('span', { class: 'hint' }, ` on #${run.started_from.run_id}'s ${run.started_from.stage}`) : null);
       cells.preset.textContent = run.preset ?? 'custom';
       replaceChildren(cells.status, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status));
@@ -256,7 +271,6 @@ export function runsView(root, params = new URLSearchParams()) {
       emptyState.hidden = runs.length > 0;
       replaceChildren(emptyState, filtered ? 'No runs match these filters.'
         : ['No runs yet. ', h('a', { href: '#/new' }, 'Start one'), '.']);
-      studyNote.textContent = state.study ? `study ${state.study}` : '';
       pageLabel.textContent = `Page ${state.page} of ${pages} · ${answer.total} run${answer.total === 1 ? '' : 's'}`;
       prevButton.disabled = state.page <= 1;
       nextButton.disabled = !answer.next;
