@@ -122,5 +122,16 @@ await runBrowserTest(['--max-queued', String(RUNS), '--import-root', importRoot]
     `${await label()}; ${listRequests.slice(beforeStudy).map(String).join(' | ')}`);
   await screenshot(page, 'runs-pages-study');
 
+  // Compare's picker: the 100 newest runs and a ticked older one, never the whole list.
+  const beforeCompare = listRequests.length;
+  await page.goto(`${base}/#/compare?ids=1`);
+  await page.locator('.compare-picker input[data-run-id="1"]').waitFor({ state: 'attached' });
+  const picked = await page.$$eval('.compare-picker input', (inputs) => inputs.map((i) => [Number(i.dataset.runId), i.checked]));
+  check('compare offers the 100 newest runs and the ticked run 1, older than them',
+    picked.length === 101 && picked.some(([id, on]) => id === 1 && on) && picked.filter(([, on]) => on).length === 1,
+    `${picked.length} offered`);
+  check('...asking the server for 100 runs', listRequests.slice(beforeCompare).every((q) => q.get('limit') === '100')
+    && listRequests.length > beforeCompare);
+
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('; '));
 });

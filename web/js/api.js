@@ -48,8 +48,6 @@ export const api = {
   health: () => request('GET', '/api/health'),
   presets: async () => (await request('GET', '/api/presets')).presets,
   preset: (name) => request('GET', `/api/presets/${encodeURIComponent(name)}`),
-  /** Every run (the list without a limit): for pickers that need them all. */
-  runs: async () => (await request('GET', '/api/runs')).runs,
   /**
    * One page of the runs list, filtered and sorted on the server: `params` among limit,
    * offset, status, preset, study, q, sort, order (empty values are left out).
