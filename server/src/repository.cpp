@@ -76,21 +76,24 @@ constexpr const char* kMigrations[] = {
     // 4 -> 5: the stored run (and its stage) a run started from: start_from.run_id.
     "ALTER TABLE runs ADD COLUMN origin_run_id INTEGER; ALTER TABLE runs ADD COLUMN origin_stage TEXT;",
     // 5 -> 6: the study a run belongs to (the sweep it was imported from), and the indexes that
-    // serve a page of the runs list (RunQuery) without reading every run: one per filter and per
-    // sort key, each ending in id so ties keep one order. Runs imported before this are
+    // serve a page of the runs list (RunQuery) without reading every run: one per sort key and
+    // one per filter, each ending in (created_at, id), the order ties are broken in. Walking an index, SQLite reads a run's row only for the runs on the page, so a
+    // deep page skips index entries, not rows (a row holds its scene and shapes, kilobytes).
+    // Runs imported before this are
     // recognised by what importSweep writes: a "SWEEP/ID" name, started and finished at the
     // moment they were created.
     R"sql(
     ALTER TABLE runs ADD COLUMN study TEXT NOT NULL DEFAULT '';
     UPDATE runs SET study = substr(name, 1, instr(name, '/') - 1)
       WHERE instr(name, '/') > 1 AND started_at = created_at AND finished_at = created_at;
-    CREATE INDEX runs_by_status ON runs (status, id);
-    CREATE INDEX runs_by_preset ON runs (preset, id);
-    CREATE INDEX runs_by_study ON runs (study, id);
+    CREATE INDEX runs_by_created_at ON runs (created_at, id);
+    CREATE INDEX runs_by_status ON runs (status, created_at, id);
+    CREATE INDEX runs_by_preset ON runs (preset, created_at, id);
+    CREATE INDEX runs_by_study ON runs (study, created_at, id);
     CREATE INDEX runs_by_study_status ON runs (study, status);
-    CREATE INDEX runs_by_name ON runs (name, id);
-    CREATE INDEX runs_by_wall_seconds ON runs (wall_seconds, id);
-    CREATE INDEX runs_by_peak_phi_mob_deg ON runs (peak_phi_mob_deg, id);
+    CREATE INDEX runs_by_name ON runs (name, created_at, id);
+    CREATE INDEX runs_by_wall_seconds ON runs (wall_seconds, created_at, id);
+    CREATE INDEX runs_by_peak_phi_mob_deg ON runs (peak_phi_mob_deg, created_at, id);
     )sql",
 };
 
@@ -188,9 +191,9 @@ class ReadSnapshot {
   Database& db_;
 };
 
-// The statement for one RunQuery: WHERE from its filters, ORDER BY its key then id (an index
-// on (key, id) serves both), LIMIT/OFFSET for its page. `count` gives COUNT(*) instead of rows.
-// Parameters are bound by bindRunQuery; values never enter the text.
+// The statement for one RunQuery: WHERE from its filters, ORDER BY its key then created_at and
+// id (an index on (key, created_at, id) serves it), LIMIT/OFFSET for its page. `count` gives
+// COUNT(*) instead of rows. Parameters are bound by bindRunQuery; values never enter the text.
 std::string listQuery(const RunQuery& q, bool count) {
   std::string where;
   auto clause = [&](const std::string& c) { where += (where.empty() ? " WHERE " : " AND ") + c; };
@@ -205,9 +208,10 @@ std::string listQuery(const RunQuery& q, bool count) {
   if (!q.nameContains.empty()) clause("name LIKE :name_pattern ESCAPE '\\'");
   if (count) return "SELECT COUNT(*) FROM runs" + where;
   const std::string direction = q.descending ? " DESC" : " ASC";
+  // Ties go by creation, then id, in the same direction: one index walk serves the order.
   std::string text = std::string(sql::kListColumns) + where + " ORDER BY ";
   if (q.sort != RunSortKey::CreatedAt) text += std::string(sortKeyName(q.sort)) + direction + ", ";
-  text += "id" + direction;  // ids grow with creation: id order is created_at order
+  text += "created_at" + direction + ", id" + direction;
   if (q.limit || q.offset > 0) text += " LIMIT :limit OFFSET :offset";
   return text;
 }

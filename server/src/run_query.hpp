@@ -13,7 +13,8 @@
 
 namespace grainlab::server {
 
-/// The orders a list can have. Each is backed by an index on (key, id); ties go by id.
+/// The orders a list can have. Each is backed by an index on (key, created_at, id): ties go
+/// by creation, then id, in the same direction.
 enum class RunSortKey { CreatedAt, Name, Status, Preset, WallSeconds, PeakPhiMobDeg };
 
 struct RunQuery {
