@@ -9,6 +9,7 @@
 #include <deque>
 #include <functional>
 #include <future>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "run_query.hpp"
 #include "run_record.hpp"
 
 namespace grainlab::server {
@@ -34,6 +36,18 @@ struct RunEnd {
   int particles = 0;
   std::optional<double> peakPhiMobDeg;
   std::string warnings = "[]";  ///< the validity envelope's, as summary.json's "warnings" (JSON)
+};
+
+/// A page of the runs list and how many runs match the query in all.
+struct RunPage {
+  std::vector<RunRecord> runs;
+  std::int64_t total = 0;
+};
+
+/// A study's runs counted by status ("completed" -> 12, ...).
+struct StudyCounts {
+  std::string study;
+  std::map<std::string, std::int64_t> byStatus;
 };
 
 class Repository {
@@ -56,6 +70,17 @@ class Repository {
   // ---- reads (any thread) ----
   /// Every run, oldest first, without its scene (RunRecord::scene is empty).
   std::vector<RunRecord> listRuns();
+  /// The runs a query asks for (one page of them if it has a limit), without their scenes,
+  /// and how many match in all; both read in one transaction.
+  RunPage listRuns(const RunQuery& query);
+  /// SQLite's EXPLAIN QUERY PLAN of the query's page (or count) statement, one line per step:
+  /// what tests and benchmarks check to see an index serve it.
+  std::string queryPlan(const RunQuery& query, bool count);
+  /// The ids of the runs with exactly this name (runs_by_name), oldest first.
+  std::vector<std::int64_t> runIdsNamed(const std::string& name);
+  /// The studies (imported sweeps) with their runs counted by status, by name; `only`: just
+  /// that one (none if no run belongs to it).
+  std::vector<StudyCounts> studies(const std::string& only = {});
   std::optional<RunRecord> findRun(std::int64_t id);
   std::vector<SampleRecord> samples(std::int64_t id);
   /// Histogram messages' JSON in sample order; `latestOnly` keeps the last one.

@@ -43,6 +43,7 @@ struct RunRecord {
   /// The program that produced it: "grainlab", or "lammps" for an imported LAMMPS run
   /// (`grainlab import lammps --db`). The API's `origin`.
   std::string producedBy = "grainlab";
+  std::string study;               ///< the study it belongs to (the sweep it was imported from); empty if none
 };
 
 /// One row of the series as the engine produced it.

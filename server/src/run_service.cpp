@@ -1,4 +1,5 @@
 #include "run_service.hpp"
+#include "study_summary.hpp"
 #include "sweep_import.hpp"
 
 #include <algorithm>
@@ -111,7 +112,11 @@ void RunService::requeueStored() {
   std::error_code ec;
   std::filesystem::create_directories(checkpointDir_, ec);
   specimens_.removeStale();
-  for (const RunRecord& listed : repo_.listRuns()) {
+  // Only the runs that may need it: queued or interrupted, oldest first (runs_by_status).
+  RunQuery waiting;
+  waiting.statuses = {RunStatus::Queued, RunStatus::Interrupted};
+  waiting.descending = false;
+  for (const RunRecord& listed : repo_.listRuns(waiting).runs) {
     if (listed.status == RunStatus::Interrupted && hasCheckpoint(listed.id)) {
       if (!options_.resumeInterrupted) {
         std::cerr << "grainlab serve: run " << listed.id << " (" << listed.name << ") was interrupted at step "
@@ -463,6 +468,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
   j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);
   j["origin"] = merged.producedBy;
+  j["study"] = merged.study.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.study);
   j["started_from"] = merged.origin ? nlohmann::json{{"run_id", merged.origin->runId}, {"stage", merged.origin->stage}}
                                     : nlohmann::json(nullptr);
   if (withScene) {
@@ -502,16 +508,32 @@ bool RunService::exists(std::int64_t id) {
   }
 }
 
-nlohmann::json RunService::list() {
+nlohmann::json RunService::list(const RunQuery& query) {
   nlohmann::json runs = nlohmann::json::array();
-  auto records = repo_.listRuns();
-  // Newest first: the run a person just started is at the top.
-  for (auto it = records.rbegin(); it != records.rend(); ++it) {
-    auto run = live(it->id);
-    if (run && run->deleted()) continue;
-    runs.push_back(runJson(*it, false));
+  const RunPage page = repo_.listRuns(query);
+  for (const RunRecord& record : page.runs) {
+    auto run = live(record.id);
+    if (run && run->deleted()) continue;  // on its way out: its rows go in the next write
+    runs.push_back(runJson(record, false));
   }
-  return {{"runs", std::move(runs)}};
+  const std::int64_t end = query.offset + (query.limit ? *query.limit : page.total);
+  return {{"runs", std::move(runs)},
+          {"total", page.total},
+          {"offset", query.offset},
+          {"limit", query.limit ? nlohmann::json(*query.limit) : nlohmann::json(nullptr)},
+          {"next", query.limit && end < page.total ? nlohmann::json("/api/runs?" + runQueryString(query, end))
+                                                   : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json RunService::studies() {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StudyCounts& study : repo_.studies()) out.push_back(studyJson(study));
+  return {{"studies", std::move(out)}};
+}
+
+nlohmann::json RunService::study(const std::string& name) {
+  for (const StudyCounts& study : repo_.studies(name)) return studyJson(study);
+  throw ApiError(404, "no study '" + name + "'", "study");
 }
 
 nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }

@@ -14,6 +14,7 @@
 
 #include "grainlab/server/serve.hpp"
 #include "run_manager.hpp"
+#include "run_query.hpp"
 #include "series_format.hpp"
 #include "specimen_source.hpp"
 
@@ -38,7 +39,13 @@ class RunService {
   /// stored), 503 past the particle limit, 429 when the queue is full. A scene may start from a
   /// stored run's stage (start_from.run_id, SpecimenSource), never from a file it names.
   std::int64_t create(const std::string& body);
-  nlohmann::json list();
+  /// {"runs": [...], "total", "offset", "limit", "next"}: the runs the query asks for,
+  /// without their scenes; `next` the path of the page after this one, or null.
+  nlohmann::json list(const RunQuery& query = {});
+  /// {"studies": [study, ...]} by name (study_summary.hpp); study(name) one of them, 404 if
+  /// no run belongs to it.
+  nlohmann::json studies();
+  nlohmann::json study(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);

@@ -20,6 +20,12 @@ std::string freshDb(const std::string& name) {
   return path.string();
 }
 
+// What a database from before studies looked like (schema 5): no study column, no list indexes.
+constexpr const char* kUndoStudies =
+    "DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
+    "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
+    "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study;";
+
 RunRecord queued(const std::string& name) {
   RunRecord r;
   r.name = name;
@@ -154,6 +160,7 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     // What a version-1 database looked like: no cpu_seconds, estimated_seconds, warnings nor
     // origin columns.
     Database db(path, true);
+    db.exec(kUndoStudies);
     db.exec("ALTER TABLE runs DROP COLUMN produced_by; ALTER TABLE runs DROP COLUMN origin_stage; ALTER TABLE runs DROP COLUMN origin_run_id; "
             "ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
             "ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");

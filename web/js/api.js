@@ -48,7 +48,20 @@ export const api = {
   health: () => request('GET', '/api/health'),
   presets: async () => (await request('GET', '/api/presets')).presets,
   preset: (name) => request('GET', `/api/presets/${encodeURIComponent(name)}`),
-  runs: async () => (await request('GET', '/api/runs')).runs,
+  /**
+   * One page of the runs list, filtered and sorted on the server: `params` among limit,
+   * offset, status, preset, study, q, sort, order (empty values are left out).
+   * Resolves to {runs, total, offset, limit, next}.
+   */
+  runsPage: (params) => {
+    const query = new URLSearchParams();
+    for (const [key, value] of Object.entries(params)) {
+      if (value !== undefined && value !== null && value !== '') query.set(key, String(value));
+    }
+    return request('GET', `/api/runs?${query}`);
+  },
+  /** [{name, runs, by_status, status, progress, runs_url}]: the imported sweeps. */
+  studies: async () => (await request('GET', '/api/studies')).studies,
   run: (id) => request('GET', runPath(id)),
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,

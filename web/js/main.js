@@ -29,7 +29,7 @@ function route() {
     nav = 'compare';
     current = compareView(viewRoot, params);
   } else {
-    current = runsView(viewRoot);
+    current = runsView(viewRoot, params);
   }
   for (const link of document.querySelectorAll('[data-nav]')) link.classList.toggle('active', link.dataset.nav === nav);
 }

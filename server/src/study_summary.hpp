@@ -1,0 +1,16 @@
+#pragma once
+// A study as GET /api/studies shows it: the runs it holds counted by status, one status for
+// the whole (as runs have it) and its progress. Studies are, for now, the sweeps imported
+// into the database: a run's `study` names the sweep it came from.
+#include <nlohmann/json.hpp>
+
+#include "repository.hpp"
+
+namespace grainlab::server {
+
+/// {"name", "runs", "by_status": {"completed": 11, ...}, "status", "progress", "runs_url"}.
+/// status: running or queued while any run is; else failed, interrupted or cancelled if
+/// any run ended so (in that order); else completed. progress: the share of runs ended.
+nlohmann::json studyJson(const StudyCounts& study);
+
+}  // namespace grainlab::server
