@@ -13,4 +13,9 @@ namespace grainlab::server {
 /// any run ended so (in that order); else completed. progress: the share of runs ended.
 nlohmann::json studyJson(const StudyCounts& study);
 
+/// What a study launched here adds (POST /api/studies): "source": "launched" (else
+/// "imported"), "created_at", "cancelled"; with `detail` its "spec" and "run_parameters"
+/// ([{"id", "name", "parameters": {path: value}}] in the spec's order).
+void addLaunch(nlohmann::json& study, const StudyRecord& launched, bool detail);
+
 }  // namespace grainlab::server
