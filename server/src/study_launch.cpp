@@ -40,8 +40,10 @@ std::string studyName(const nlohmann::ordered_json& spec) {
 // `grainlab sweep` names it), else runs[K].FIELD.
 std::string runField(const std::string& field, std::size_t k, const std::vector<studies::SweepAxis>& axes) {
   for (const studies::SweepAxis& axis : axes) {
-    const std::string name = studies::sceneFieldName(axis.path);
-    if (field == name || field.starts_with(name + ".") || field.starts_with(name + "[")) return "vary." + axis.path;
+    // (the scene parser writes stages[2].x, the cost estimate stages.2.x)
+    for (const std::string& name : {studies::sceneFieldName(axis.path), axis.path}) {
+      if (field == name || field.starts_with(name + ".") || field.starts_with(name + "[")) return "vary." + axis.path;
+    }
   }
   return "runs[" + std::to_string(k) + "]" + (field.empty() ? "" : "." + field);
 }
@@ -91,7 +93,8 @@ nlohmann::json RunService::launchStudy(const std::string& body) {
                     std::max(0L, static_cast<long>(options_.maxQueuedRuns) - static_cast<long>(manager_.queued()));
   if (static_cast<long>(runs.size()) > room)
     throw ApiError(429, "the run queue has room for " + std::to_string(room) + " runs, the study has " +
-                            std::to_string(runs.size()) + "; try again when runs have finished");
+                            std::to_string(runs.size()) + "; try again when runs have finished",
+                   "vary");
 
   const std::string preset = spec["base"].contains("preset") ? spec["base"]["preset"].get<std::string>() : "";
   std::vector<AdmittedRun> admitted;
