@@ -67,9 +67,28 @@ nlohmann::json RunService::launchStudy(const std::string& body) {
                    "grainlab sweep and import it (POST /api/sweeps/import)",
                    "prepare");
   studies::SweepSpec sweep;
-  std::vector<studies::SweepRun> runs;
   try {
     sweep = studies::parseSweepSpec(spec);
+  } catch (const SceneError& e) {
+    throw ApiError(400, e.reason(), e.field());
+  }
+  // Room for every run: the free run slots and the queue's free places. A study larger than
+  // an idle server holds is a spec this server will never take (400, counted before any
+  // scene is built); one that fits an idle server but not now may come back later (429, as
+  // a run does).
+  std::size_t count = sweep.mode == studies::SweepMode::Zip ? sweep.axes.front().values.size() : 1;
+  if (sweep.mode == studies::SweepMode::Grid)
+    for (const studies::SweepAxis& axis : sweep.axes) count *= axis.values.size();  // <= kMaxSweepRuns
+  const std::size_t ceiling = static_cast<std::size_t>(manager_.maxConcurrent() + std::max(0, options_.maxQueuedRuns));
+  if (count > ceiling)
+    throw ApiError(400,
+                   "the study has " + std::to_string(count) + " runs; this server holds at most " +
+                       std::to_string(ceiling) + " at once (" + std::to_string(manager_.maxConcurrent()) +
+                       " running, " + std::to_string(options_.maxQueuedRuns) +
+                       " queued: grainlab serve --max-concurrent, --max-queued)",
+                   "vary");
+  std::vector<studies::SweepRun> runs;
+  try {
     runs = studies::expandSweep(sweep);
   } catch (const SceneError& e) {
     throw ApiError(400, e.reason(), e.field());
@@ -78,17 +97,6 @@ nlohmann::json RunService::launchStudy(const std::string& body) {
   std::lock_guard lock(studyMutex_);
   if (!repo_.launchedStudies(name).empty() || !repo_.studies(name).empty())
     throw ApiError(409, "a study named '" + name + "' exists already", "name");
-  // Room for every run: the free run slots and the queue's free places. A study larger than
-  // an idle server holds is a spec this server will never take (400); one that fits an idle
-  // server but not now may come back later (429, as a run does).
-  const std::size_t ceiling = static_cast<std::size_t>(manager_.maxConcurrent() + std::max(0, options_.maxQueuedRuns));
-  if (runs.size() > ceiling)
-    throw ApiError(400,
-                   "the study has " + std::to_string(runs.size()) + " runs; this server holds at most " +
-                       std::to_string(ceiling) + " at once (" + std::to_string(manager_.maxConcurrent()) +
-                       " running, " + std::to_string(options_.maxQueuedRuns) +
-                       " queued: grainlab serve --max-concurrent, --max-queued)",
-                   "vary");
   const long room = std::max(0, manager_.maxConcurrent() - manager_.running()) +
                     std::max(0L, static_cast<long>(options_.maxQueuedRuns) - static_cast<long>(manager_.queued()));
   if (static_cast<long>(runs.size()) > room)
