@@ -52,9 +52,9 @@ class RunService {
   /// queue has no room for all of it now, 503 past the particle limit; 409 for a name in use.
   /// Returns the new study as study() gives it.
   nlohmann::json launchStudy(const std::string& body);
-  /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does.
-  /// 200 when every one of them ended at once, 202 when a running one was asked to stop; 404
-  /// unknown, 409 when none was queued or running.
+  /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does,
+  /// and its interrupted ones (their checkpoints dropped). 200 when every one of them ended
+  /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
   std::pair<int, nlohmann::json> cancelStudy(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);

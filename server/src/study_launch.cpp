@@ -173,7 +173,29 @@ std::pair<int, nlohmann::json> RunService::cancelStudy(const std::string& name) 
       }
     }
   }
-  if (ended + stopping == 0) throw ApiError(409, "study '" + name + "' has no queued or running run", "study");
+  // An interrupted run is the study's unfinished work too: cancelled with it, its checkpoint
+  // dropped, so that no later `--resume-interrupted` runs it on. What it stored is kept.
+  RunQuery interrupted;
+  interrupted.study = name;
+  interrupted.statuses = {RunStatus::Interrupted};
+  for (const RunRecord& run : repo_.listRuns(interrupted).runs) {
+    if (live(run.id)) continue;  // resumed meanwhile: the passes above see it next time
+    RunEnd end;
+    end.status = RunStatus::Cancelled;
+    end.error = "cancelled with its study while interrupted (" + run.error + ")";
+    end.stage = run.stage;
+    end.finishedAt = unixNow();
+    end.wallSeconds = run.wallSeconds;
+    end.cpuSeconds = run.cpuSeconds;
+    end.steps = run.steps;
+    end.particles = run.particles;
+    end.peakPhiMobDeg = run.peakPhiMobDeg;
+    end.warnings = run.warnings;
+    repo_.finishRun(run.id, end, nullptr);
+    removeCheckpoint(run.id);
+    ++ended;
+  }
+  if (ended + stopping == 0) throw ApiError(409, "study '" + name + "' has no queued, running or interrupted run", "study");
   if (launched) repo_.setStudyStatus(name, "cancelled");
   repo_.flush().get();
   return {stopping > 0 ? 202 : 200, study(name)};

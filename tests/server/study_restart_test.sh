@@ -54,5 +54,29 @@ again=$(json b.id)
 check "the same scene as a plain run completes" wait_status "$again" completed 60
 req GET "/api/runs/$again/series?format=csv"
 check "the resumed run's series is the unstopped run's, byte for byte" test "$BODY" = "$RESUMED"
+
+# A study cancelled while a run of it is interrupted: that run ends cancelled too, not
+# resumable, and the next --resume-interrupted leaves it.
+req POST /api/studies -d "{ \"name\": \"dropped\", \"base\": $BASE, \"vary\": { \"stages.0.duration\": [1000, 1001] } }"
+dropped=($(json 'b.run_parameters.map(r => r.id).join(" ")'))
+check "a second study's first run starts" wait_status "${dropped[0]}" running 30
+stop_server TERM
+start_server "$TMP_ROOT/4.log" "$DB" --max-concurrent 1
+check "its second run starts after the restart" wait_status "${dropped[1]}" running 30
+req GET "/api/runs/${dropped[0]}"
+expect "its first is interrupted and resumable" 200 '"resumable":true'
+req POST /api/studies/dropped/cancel
+expect "cancelling the study" 202 '"cancelled":true'
+check "its running run ends cancelled" wait_status "${dropped[1]}" cancelled 30
+req GET "/api/runs/${dropped[0]}"
+check "its interrupted run is cancelled, no longer resumable" \
+  test "$(json 'b.status + " " + b.resumable')" = "cancelled false"
+req GET /api/studies/dropped
+check "the study is cancelled, progress 1" test "$(json 'b.status + " " + b.progress + " " + b.by_status.cancelled')" = "cancelled 1 2"
+stop_server TERM
+start_server "$TMP_ROOT/5.log" "$DB" --max-concurrent 1 --resume-interrupted
+check "--resume-interrupted leaves the cancelled study's run" bash -c "! grep -q 'resuming run ${dropped[0]} ' '$TMP_ROOT/5.log'"
+req GET "/api/runs/${dropped[0]}"
+expect "...cancelled" 200 '"status":"cancelled"'
 stop_server TERM
 finish
