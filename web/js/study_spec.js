@@ -5,11 +5,17 @@
 /** "0.3, 0.5, dense" -> [0.3, 0.5, "dense"]: each piece as JSON where it reads as JSON, else a string. */
 export function parseValues(text) {
   const pieces = [];
-  // Commas inside brackets belong to the value ([0, -9.81]).
-  let depth = 0, start = 0;
+  // Commas inside brackets or quotes belong to the value ([0, -9.81], "a, b").
+  let depth = 0, start = 0, quoted = false;
   for (let i = 0; i <= text.length; i++) {
     const c = text[i];
-    if (c === '[' || c === '{') depth++;
+    if (quoted && i < text.length) {
+      if (c === '\\') i++;
+      else if (c === '"') quoted = false;
+      continue;
+    }
+    if (c === '"') quoted = true;
+    else if (c === '[' || c === '{') depth++;
     else if (c === ']' || c === '}') depth--;
     if (i === text.length || (c === ',' && depth === 0)) {
       const piece = text.slice(start, i).trim();
