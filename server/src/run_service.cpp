@@ -560,6 +560,13 @@ nlohmann::json RunService::study(const std::string& name) {
   return study;
 }
 
+std::string RunService::studyText(const std::string& name) {
+  const nlohmann::json summary = study(name);
+  const auto launched = repo_.launchedStudies(name);
+  return launched.empty() ? summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+                          : withSpec(summary, launched.front());
+}
+
 nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }
 
 nlohmann::json RunService::series(std::int64_t id) {

@@ -46,16 +46,19 @@ class RunService {
   /// no run belongs to it.
   nlohmann::json studies();
   nlohmann::json study(const std::string& name);
+  /// The body of GET /api/studies/{name}: study(name) with a launched study's "spec" as posted.
+  std::string studyText(const std::string& name);
   /// POST /api/studies (study_launch.cpp): a sweep spec, the JSON of `grainlab sweep`, becomes a
   /// study of queued runs. Every run is admitted as create() admits one before anything is
   /// stored: refused whole with 400 naming the spec's field or runs[K].FIELD, 429 when the
   /// queue has no room for all of it now, 503 past the particle limit; 409 for a name in use.
-  /// Returns the new study as study() gives it.
-  nlohmann::json launchStudy(const std::string& body);
+  /// Returns the new study's name.
+  std::string launchStudy(const std::string& body);
   /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does,
   /// and its interrupted ones (their checkpoints dropped). 200 when every one of them ended
   /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
-  std::pair<int, nlohmann::json> cancelStudy(const std::string& name);
+  /// Returns the status and the study's body (studyText).
+  std::pair<int, std::string> cancelStudy(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);

@@ -56,7 +56,7 @@ std::string describe(const studies::SweepRun& run) {
 
 }  // namespace
 
-nlohmann::json RunService::launchStudy(const std::string& body) {
+std::string RunService::launchStudy(const std::string& body) {
   const nlohmann::ordered_json spec = nlohmann::ordered_json::parse(body, nullptr, false);
   if (spec.is_discarded()) throw ApiError(400, "the body is not valid JSON", "(json)");
   if (!spec.is_object()) throw ApiError(400, "expected a sweep spec: {name, base, vary, mode}", "(json)");
@@ -151,10 +151,10 @@ nlohmann::json RunService::launchStudy(const std::string& body) {
       throw;
     }
   }
-  return study(name);
+  return name;
 }
 
-std::pair<int, nlohmann::json> RunService::cancelStudy(const std::string& name) {
+std::pair<int, std::string> RunService::cancelStudy(const std::string& name) {
   std::lock_guard lock(studyMutex_);
   const bool launched = !repo_.launchedStudies(name).empty();
   if (!launched && repo_.studies(name).empty()) throw ApiError(404, "no study '" + name + "'", "study");
@@ -198,7 +198,7 @@ std::pair<int, nlohmann::json> RunService::cancelStudy(const std::string& name) 
   if (ended + stopping == 0) throw ApiError(409, "study '" + name + "' has no queued, running or interrupted run", "study");
   if (launched) repo_.setStudyStatus(name, "cancelled");
   repo_.flush().get();
-  return {stopping > 0 ? 202 : 200, study(name)};
+  return {stopping > 0 ? 202 : 200, studyText(name)};
 }
 
 }  // namespace grainlab::server

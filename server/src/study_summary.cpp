@@ -41,8 +41,14 @@ void addLaunch(nlohmann::json& study, const StudyRecord& launched, bool detail) 
   study["created_at"] = isoTime(launched.createdAt);
   study["cancelled"] = launched.status == "cancelled";
   if (!detail) return;
-  study["spec"] = nlohmann::ordered_json::parse(launched.spec, nullptr, false);
   study["run_parameters"] = nlohmann::json::parse(launched.runs, nullptr, false);
+}
+
+std::string withSpec(const nlohmann::json& study, const StudyRecord& launched) {
+  std::string text = study.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  text.pop_back();  // the object's closing brace
+  // (stored as the ordered dump of a spec that parsed: valid JSON)
+  return text + ",\"spec\":" + launched.spec + "}";
 }
 
 }  // namespace grainlab::server

@@ -18,6 +18,8 @@ for id in $ids; do check "run $id completes" wait_status "$id" completed 30; don
 req GET /api/studies/durations
 expect "the study is completed once its runs are" 200 '"status":"completed"'
 check "...progress 1, 3 completed" test "$(json 'b.progress + " " + b.by_status.completed')" = "1 3"
+check "...its spec as posted, keys in their order (vary's order is its runs' order)" \
+  test "$(json 'Object.keys(b.spec).join() + " " + b.spec.vary["stages.0.duration"].join()')" = "name,base,vary 0.001,0.002,0.003"
 req GET "/api/runs?study=durations&order=asc"
 check "its runs carry the study, in the spec's order" \
   test "$(json 'b.runs.map(r => r.study + ":" + r.name).join(" ")')" = \

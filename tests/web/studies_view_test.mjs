@@ -2,9 +2,15 @@
 // 0.3 and 0.5, seeds 1 and 2) launched from the form, which shows the run count first and a
 // refusal beside the row it names (with nothing stored); the list follows the study to its
 // end by polling; the study's page shows one band per friction, each of 2 runs, and its mean
-// of φ_mob at the last common strain is the mean of the runs' own series there. The CSV
-// download holds the same numbers. No console errors but the refusal provoked on purpose.
-import { check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
+// of φ_mob at the last common strain is the mean of the runs' own series there, and of the
+// series `grainlab sweep` writes for the same spec. The CSV download holds the same numbers.
+// No console errors but the refusal provoked on purpose.
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+import { CLI, canvasInk, check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
 
 const NAME = 'quick-friction';
 
@@ -62,20 +68,45 @@ await runBrowserTest([], async ({ server, browser }) => {
   const mean = Number(await shown.locator('.band-mean').getAttribute('data-mean'));
   const study = await json(`/api/studies/${NAME}`);
   const ids = study.run_parameters.filter((r) => r.parameters['material.friction'] === 0.3).map((r) => r.id);
+  // φ_mob at `strain` from one run's rows (columns named by `columns`).
+  const phiAt = (columns, rows) => {
+    const c = (name) => columns.indexOf(name);
+    const shearing = rows.filter((r) => r[c('stage')] === 'shearing');
+    const xs = shearing.map((r) => r[c('axial_strain')] * 100);
+    const k = xs.findIndex((x) => x >= strain - 1e-9 * Math.abs(strain));
+    const y = (row) => shearing[row][c('phi_mob_deg')];
+    return xs[k] === strain || k === 0 ? y(k) : y(k - 1) + (strain - xs[k - 1]) / (xs[k] - xs[k - 1]) * (y(k) - y(k - 1));
+  };
+  const meanOf = (ys) => ys.reduce((a, b) => a + b, 0) / ys.length;
   const ys = [];
   for (const id of ids) {
     const series = await json(`/api/runs/${id}/series`);
-    const c = (name) => series.columns.indexOf(name);
-    const rows = series.rows.filter((r) => r[c('stage')] === 'shearing');
-    const xs = rows.map((r) => r[c('axial_strain')] * 100);
-    const k = xs.findIndex((x) => x >= strain - 1e-9 * Math.abs(strain));
-    const y = xs[k] === strain || k === 0 ? rows[k][c('phi_mob_deg')]
-      : rows[k - 1][c('phi_mob_deg')] + (strain - xs[k - 1]) / (xs[k] - xs[k - 1]) * (rows[k][c('phi_mob_deg')] - rows[k - 1][c('phi_mob_deg')]);
-    ys.push(y);
+    ys.push(phiAt(series.columns, series.rows));
   }
-  const expected = ys.reduce((a, b) => a + b, 0) / ys.length;
+  const expected = meanOf(ys);
   check(`the table's mean of φ_mob at ${strain.toPrecision(4)} % (${mean.toPrecision(6)}°) is the runs' own (${expected.toPrecision(6)}°)`,
     ids.length === 2 && Math.abs(mean - expected) <= 1e-9 * Math.abs(expected), `runs ${ids}, values ${ys}`);
+
+  // The same spec through grainlab sweep (about 2 s of CPU): the same runs, the same mean.
+  const scratch = mkdtempSync(join(tmpdir(), 'grainlab-studies-view-'));
+  try {
+    writeFileSync(join(scratch, 'spec.json'), JSON.stringify(study.spec));
+    const swept = spawnSync(CLI, ['sweep', join(scratch, 'spec.json'), '--out', join(scratch, 'out'), '--jobs', '1'], { encoding: 'utf8' });
+    check('grainlab sweep runs the study\'s spec', swept.status === 0, swept.stderr.slice(-300));
+    const sweptYs = study.run_parameters.filter((r) => r.parameters['material.friction'] === 0.3).map((r) => {
+      const folder = r.name.slice(NAME.length + 1);  // the study's runs are named STUDY/<sweep run id>
+      const [header, ...lines] = readFileSync(join(scratch, 'out', 'runs', folder, 'series.csv'), 'utf8').trim().split('\n');
+      const columns = header.split(',');
+      const rows = lines.map((line) => line.split(',').map((cell, k) => (columns[k] === 'stage' ? cell : Number(cell))));
+      return phiAt(columns, rows);
+    });
+    check(`...whose series give the table's mean too (${meanOf(sweptYs).toPrecision(6)}°)`,
+      sweptYs.length === 2 && Math.abs(meanOf(sweptYs) - mean) <= 1e-9 * Math.abs(mean), `values ${sweptYs}`);
+  } finally {
+    rmSync(scratch, { recursive: true, force: true });
+  }
+  const ink = await canvasInk(page, '.study-chart canvas');
+  check(`the ensemble chart is drawn (${(100 * ink).toFixed(1)} % of its pixels inked)`, ink > 0.01);
   check('the two frictions give different means', (await page.$$eval('.band-mean', (c) => new Set(c.map((x) => x.dataset.mean)).size)) === 2);
 
   const csv = await page.evaluate(async () => (await fetch(document.querySelector('.view-title ~ .panel a[download]').href)).text());
