@@ -116,5 +116,21 @@ await runBrowserTest([], async ({ server, browser }) => {
   const atStrain = lines.slice(2).map((l) => l.split(',')).find((cells) => Number(cells[0]) === strain);
   check('...with the table\'s mean at that strain', atStrain && Number(atStrain[1]) === mean, atStrain?.join(','));
   await screenshot(page, 'study-view');
+
+  // Cancel from the list: three runs sheared to 20 %, cancelled while the first is running.
+  await page.getByRole('link', { name: 'All studies' }).click();
+  await waitUntil(async () => (await page.locator('#study-preset option').count()) > 0, 30);
+  await page.locator('#study-name').fill('to-cancel');
+  await page.locator('.study-row .study-remove').first().click();
+  await page.locator('#study-seeds').fill('1, 2, 3');
+  await page.getByRole('button', { name: 'Launch study' }).click();
+  const cancelRow = page.locator('tr[data-study="to-cancel"]');
+  await waitUntil(async () => (await cancelRow.count()) === 1 && /running/.test(await cancelRow.locator('.status').textContent()), 30);
+  await cancelRow.getByRole('button', { name: 'Cancel' }).click();
+  const cancelled = await waitUntil(async () => /cancelled/.test(await cancelRow.locator('.status').textContent()), 60);
+  const after = await json('/api/studies/to-cancel');
+  check('Cancel on the list cancels the study, shown there', Boolean(cancelled) && after.cancelled === true && after.status === 'cancelled',
+    JSON.stringify(after.by_status));
+  check('...its queued runs never ran', (after.by_status.cancelled ?? 0) >= 2, JSON.stringify(after.by_status));
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
 });

@@ -40,7 +40,7 @@ export function studiesView(root) {
     const valuesInput = h('input', { type: 'text', class: 'study-values', autocomplete: 'off', placeholder: '0.3, 0.5, 0.7', value: values, oninput: () => showCount(), 'aria-label': 'Values' });
     const error = h('div', { class: 'field-error' });
     const row = { pathInput, valuesInput, error };
-    const remove = h('button', { type: 'button', title: 'Remove this row', onclick: () => {
+    const remove = h('button', { type: 'button', class: 'study-remove', title: 'Remove this row', onclick: () => {
       rows.splice(rows.indexOf(row), 1);
       row.element.remove();
       showCount();
