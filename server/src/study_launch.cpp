@@ -2,7 +2,7 @@
 // expanded by grainlab::studies, the same code), becomes a study of queued runs. Every run is
 // admitted as POST /api/runs admits one before anything is stored, and the study and its runs
 // are stored in one transaction: a study is launched whole or not at all.
-#include <map>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -128,7 +128,7 @@ std::string RunService::launchStudy(const std::string& body) {
   StudyRecord launched;
   launched.name = name;
   launched.spec = spec.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  launched.runs = listed.dump();
+  launched.runs = listed.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   launched.createdAt = unixNow();
   std::vector<std::int64_t> ids;
   try {
@@ -143,8 +143,12 @@ std::string RunService::launchStudy(const std::string& body) {
       // Lost the queue's room to runs posted meanwhile (or the server is stopping): take the
       // whole study back, the runs already queued or started included.
       for (std::size_t j = 0; j < ids.size(); ++j) {
-        if (j < k) remove(ids[j]);
-        else repo_.deleteRun(ids[j]);
+        try {
+          if (j < k) remove(ids[j]);
+          else repo_.deleteRun(ids[j]);
+        } catch (const std::exception&) {
+          // Gone already (deleted meanwhile): nothing of it to take back.
+        }
       }
       repo_.deleteStudy(name);
       repo_.flush().get();
