@@ -11,6 +11,8 @@
 #include <iostream>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "sqlite.hpp"
 
 namespace grainlab::server {
@@ -97,6 +99,18 @@ constexpr const char* kMigrations[] = {
     CREATE INDEX runs_by_wall_seconds ON runs (wall_seconds, created_at, id);
     CREATE INDEX runs_by_peak_phi_mob_deg ON runs (peak_phi_mob_deg, created_at, id);
     )sql",
+    // 7 -> 8: studies launched on this server (POST /api/studies): the sweep spec as given, its
+    // runs with the values each was given (JSON), and what was asked of it ('launched' or
+    // 'cancelled'); the runs' own states give its progress. Imported sweeps have no row here.
+    R"sql(
+    CREATE TABLE studies (
+      name        TEXT PRIMARY KEY,
+      spec        TEXT NOT NULL,
+      runs        TEXT NOT NULL,
+      created_at  REAL NOT NULL,
+      status      TEXT NOT NULL
+    );
+    )sql",
 };
 
 // Every statement the server runs, by name.
@@ -113,6 +127,12 @@ constexpr const char* kStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study > '' GROUP BY study, status ORDER BY study";
 constexpr const char* kOneStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study = :study GROUP BY study, status";
+constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status FROM studies ORDER BY name";
+constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
+constexpr const char* kInsertStudy =
+    "INSERT INTO studies (name, spec, runs, created_at, status) VALUES (:name, :spec, :runs, :created_at, :status)";
+constexpr const char* kSetStudyStatus = "UPDATE studies SET status = :status WHERE name = :name";
+constexpr const char* kDeleteStudy = "DELETE FROM studies WHERE name = :name";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
@@ -237,6 +257,25 @@ void bindRunQuery(StatementUse& use, const RunQuery& q, bool count) {
 void bindOptional(StatementUse& use, const char* name, const std::optional<double>& value) {
   if (value) use.bind(name, *value);
   else use.bindNull(name);
+}
+
+// A new run's row (sql::kInsertRun); returns its id.
+std::int64_t insertRunRow(Statement& statement, Database& db, const RunRecord& run) {
+  auto use = statement.use();
+  use.bindText(":name", run.name)
+      .bindText(":preset", run.preset)
+      .bindText(":scene", run.scene)
+      .bindText(":status", std::string(toString(run.status)))
+      .bind(":particles", run.particles)
+      .bind(":created_at", run.createdAt);
+  bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
+  use.bindText(":warnings", run.warnings);
+  if (run.origin) use.bind(":origin_run_id", run.origin->runId).bindText(":origin_stage", run.origin->stage);
+  else use.bindNull(":origin_run_id").bindNull(":origin_stage");
+  use.bindText(":study", run.study);
+  use.bindText(":produced_by", run.producedBy);
+  use.run();
+  return db.lastInsertId();
 }
 
 std::optional<double> optionalAt(StatementUse& use, int column) {
@@ -638,21 +677,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
   enqueue([run, done](Writer& w) {
     std::int64_t id = 0;
     try {
-      auto use = w.statement(sql::kInsertRun).use();
-      use.bindText(":name", run.name)
-          .bindText(":preset", run.preset)
-          .bindText(":scene", run.scene)
-          .bindText(":status", std::string(toString(run.status)))
-          .bind(":particles", run.particles)
-          .bind(":created_at", run.createdAt);
-      bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
-      use.bindText(":warnings", run.warnings);
-      if (run.origin) use.bind(":origin_run_id", run.origin->runId).bindText(":origin_stage", run.origin->stage);
-      else use.bindNull(":origin_run_id").bindNull(":origin_stage");
-      use.bindText(":study", run.study);
-      use.bindText(":produced_by", run.producedBy);
-      use.run();
-      id = w.db.lastInsertId();
+      id = insertRunRow(w.statement(sql::kInsertRun), w.db, run);
     } catch (...) {
       // Told after the transaction, once: a refused batch runs its jobs again.
       w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
@@ -664,6 +689,70 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
     });
   });
   return future;
+}
+
+std::future<std::vector<std::int64_t>> Repository::insertStudy(const StudyRecord& study,
+                                                              const std::vector<RunRecord>& runs) {
+  auto done = std::make_shared<std::promise<std::vector<std::int64_t>>>();
+  auto future = done->get_future();
+  enqueue([study, runs, done](Writer& w) {
+    std::vector<std::int64_t> ids;
+    // All or nothing inside the batch's transaction: a study is never stored in part.
+    w.db.exec("SAVEPOINT study");
+    try {
+      for (const RunRecord& run : runs) ids.push_back(insertRunRow(w.statement(sql::kInsertRun), w.db, run));
+      nlohmann::json listed = nlohmann::json::parse(study.runs);
+      for (std::size_t k = 0; k < ids.size() && k < listed.size(); ++k) listed[k]["id"] = ids[k];
+      auto use = w.statement(sql::kInsertStudy).use();
+      use.bindText(":name", study.name)
+          .bindText(":spec", study.spec)
+          .bindText(":runs", listed.dump())
+          .bind(":created_at", study.createdAt)
+          .bindText(":status", study.status);
+      use.run();
+      w.db.exec("RELEASE study");
+    } catch (...) {
+      try {
+        w.db.exec("ROLLBACK TO study");
+        w.db.exec("RELEASE study");
+      } catch (const std::exception&) {
+        // SQLite rolled the whole transaction back already (a full disk).
+      }
+      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+      return;
+    }
+    w.afterCommit.push_back([done, ids, &w] {
+      if (w.committed) return done->set_value(ids);
+      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
+    });
+  });
+  return future;
+}
+
+void Repository::setStudyStatus(const std::string& name, const std::string& status) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetStudyStatus).use();
+    use.bindText(":name", name).bindText(":status", status);
+    use.run();
+  });
+}
+
+void Repository::deleteStudy(const std::string& name) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kDeleteStudy).use();
+    use.bindText(":name", name);
+    use.run();
+  });
+}
+
+std::vector<StudyRecord> Repository::launchedStudies(const std::string& only) {
+  auto reader = lease();
+  auto use = reader.statement(only.empty() ? sql::kLaunchedStudies : sql::kOneLaunchedStudy).use();
+  if (!only.empty()) use.bindText(":name", only);
+  std::vector<StudyRecord> out;
+  while (use.step())
+    out.push_back({use.textAt(0), use.textAt(1), use.textAt(2), use.doubleAt(3), use.textAt(4)});
+  return out;
 }
 
 void Repository::markStarted(std::int64_t id, double startedAt) {

@@ -50,6 +50,17 @@ struct StudyCounts {
   std::map<std::string, std::int64_t> byStatus;
 };
 
+/// A study launched on this server (POST /api/studies): the spec as given, its runs as a JSON
+/// array ([{"id", "name", "parameters": {path: value}}], in the spec's order) and what was
+/// asked of it: "launched" or "cancelled".
+struct StudyRecord {
+  std::string name;
+  std::string spec;
+  std::string runs = "[]";
+  double createdAt = 0;
+  std::string status = "launched";
+};
+
 class Repository {
  public:
   /// Who opens the database: the server owns its runs; a tool beside it (grainlab import)
@@ -81,6 +92,8 @@ class Repository {
   /// The studies (imported sweeps) with their runs counted by status, by name; `only`: just
   /// that one (none if no run belongs to it).
   std::vector<StudyCounts> studies(const std::string& only = {});
+  /// The studies launched here, by name; `only`: just that one (none if it was not launched).
+  std::vector<StudyRecord> launchedStudies(const std::string& only = {});
   std::optional<RunRecord> findRun(std::int64_t id);
   std::vector<SampleRecord> samples(std::int64_t id);
   /// Histogram messages' JSON in sample order; `latestOnly` keeps the last one.
@@ -94,6 +107,13 @@ class Repository {
   // ---- writes (queued to the writer thread, applied in order) ----
   /// Resolves to the new run's id (never reused) once it is committed; run.id is ignored.
   std::future<std::int64_t> insertRun(const RunRecord& run);
+  /// A launched study and its runs in one go (their `study` set by the caller): resolves to
+  /// the runs' ids in order, or throws with nothing stored (a name already taken, a full disk).
+  /// study.runs' entries get their run's "id".
+  std::future<std::vector<std::int64_t>> insertStudy(const StudyRecord& study, const std::vector<RunRecord>& runs);
+  void setStudyStatus(const std::string& name, const std::string& status);
+  /// The study's row only (its runs are deleted one by one): a launch taken back.
+  void deleteStudy(const std::string& name);
   void markStarted(std::int64_t id, double startedAt);
   void updateProgress(std::int64_t id, double progress, const std::string& stage,
                       std::int64_t steps);

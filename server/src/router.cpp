@@ -164,12 +164,21 @@ ApiResponse Router::route(const ApiRequest& request) {
     return jsonResponse(200, service_.importSweep(request.body));
   }
   if (seg.size() == 2 && seg[1] == "studies") {
-    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
-    return jsonResponse(200, service_.studies());
+    if (read) return jsonResponse(200, service_.studies());
+    if (method != "POST") return methodNotAllowed(method, path, "GET, HEAD, POST");
+    const std::string name = service_.launchStudy(request.body);
+    auto r = textResponse(201, "application/json", service_.studyText(name));
+    r.headers.emplace_back("Location", "/api/studies/" + name);
+    return r;
   }
   if (seg.size() == 3 && seg[1] == "studies") {
     if (!read) return methodNotAllowed(method, path, "GET, HEAD");
-    return jsonResponse(200, service_.study(std::string(seg[2])));
+    return textResponse(200, "application/json", service_.studyText(std::string(seg[2])));
+  }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "cancel") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    auto [status, study] = service_.cancelStudy(std::string(seg[2]));
+    return textResponse(status, "application/json", std::move(study));
   }
   if (seg.size() < 2 || seg[1] != "runs") return noRoute();
 

@@ -176,23 +176,45 @@ std::int64_t RunService::create(const std::string& body) {
   if (!request.is_object())
     throw ApiError(400, "expected a scene object or {\"preset\": NAME}", "(json)");
 
-  RunRecord record;
+  std::string preset;
   nlohmann::json sceneJson;
   if (request.contains("preset")) {
     if (request.size() != 1)
       throw ApiError(400, "a preset request has the one key \"preset\"; send a whole scene to change it",
                      "preset");
     if (!request["preset"].is_string()) throw ApiError(400, "must be a preset name (a string)", "preset");
-    record.preset = request["preset"].get<std::string>();
+    preset = request["preset"].get<std::string>();
     try {
-      sceneJson = presetScene(record.preset);
+      sceneJson = presetScene(preset);
     } catch (const SceneError& e) {
       throw ApiError(400, e.reason(), e.field());
     }
   } else {
     sceneJson = std::move(request);
   }
+  AdmittedRun run = admit(std::move(sceneJson), std::move(preset));
+  if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
+      manager_.running() >= manager_.maxConcurrent())
+    throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
+                            " waiting); try again when a run has finished");
+  std::int64_t id = 0;
+  try {
+    id = repo_.insertRun(run.record).get();
+  } catch (const std::exception&) {
+    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
+  }
+  try {
+    startAdmitted(id, run);
+  } catch (const ApiError&) {
+    repo_.deleteRun(id).get();  // take it back whole
+    throw;
+  }
+  return id;
+}
 
+RunService::AdmittedRun RunService::admit(nlohmann::json sceneJson, std::string preset) {
+  RunRecord record;
+  record.preset = std::move(preset);
   // The parser promises SceneError; anything else still means the scene is bad.
   Scene scene = badSceneAs400([&] { return parseScene(sceneJson); }, "(json)");
   // A stored run's stage, linked here for this run; never a file the request names.
@@ -232,10 +254,6 @@ std::int64_t RunService::create(const std::string& body) {
                        "), more than this server's limit of " + humanDuration(options_.maxRunSeconds) +
                        " (grainlab serve --max-run-seconds)",
                    cost.field);
-  if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
-      manager_.running() >= manager_.maxConcurrent())
-    throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
-                            " waiting); try again when a run has finished");
 
   record.name = scene.name;
   record.scene = sceneJson.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -244,31 +262,25 @@ std::int64_t RunService::create(const std::string& body) {
   record.estimatedSeconds = cost.certainSeconds();
   record.warnings = warningsJson(validity.warnings).dump();
   record.createdAt = unixNow();
-  std::int64_t id = 0;
-  try {
-    id = repo_.insertRun(record).get();
-  } catch (const std::exception&) {
-    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
-  }
+  return AdmittedRun{std::move(record), std::move(scene), std::move(specimen)};
+}
+
+void RunService::startAdmitted(std::int64_t id, AdmittedRun& run) {
   removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
   specimens_.remove(id);
-  if (specimen) {
+  if (run.specimen) {
     try {
-      specimens_.adopt(scene, *specimen, id);
+      specimens_.adopt(run.scene, *run.specimen, id);
     } catch (const std::exception& e) {
-      repo_.deleteRun(id).get();
       throw ApiError(503, std::string("the specimen could not be kept for the run (") + e.what() + ")");
     }
   }
-
-  if (const auto submitted = enqueue(id, particles, std::move(scene));
+  if (const auto submitted = enqueue(id, run.record.particles, std::move(run.scene));
       submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
-    // Lost a race for the last queue slot (or the server is stopping): take it back whole.
-    repo_.deleteRun(id).get();
+    // Lost a race for the last queue slot (or the server is stopping).
     if (submitted == RunManager::Submit::ShuttingDown) throw ApiError(503, "the server is shutting down");
     throw ApiError(429, "the run queue is full; try again when a run has finished");
   }
-  return id;
 }
 
 nlohmann::json RunService::resume(std::int64_t id) {
@@ -526,14 +538,33 @@ nlohmann::json RunService::list(const RunQuery& query) {
 }
 
 nlohmann::json RunService::studies() {
+  // Imported sweeps have runs only; a launched study is listed even once its runs are deleted.
+  std::map<std::string, nlohmann::json> byName;
+  for (const StudyCounts& study : repo_.studies()) byName[study.study] = studyJson(study);
+  for (const StudyRecord& launched : repo_.launchedStudies()) {
+    auto& study = byName[launched.name];
+    if (study.is_null()) study = studyJson(StudyCounts{launched.name, {}});
+    addLaunch(study, launched, false);
+  }
   nlohmann::json out = nlohmann::json::array();
-  for (const StudyCounts& study : repo_.studies()) out.push_back(studyJson(study));
+  for (auto& [name, study] : byName) out.push_back(std::move(study));
   return {{"studies", std::move(out)}};
 }
 
 nlohmann::json RunService::study(const std::string& name) {
-  for (const StudyCounts& study : repo_.studies(name)) return studyJson(study);
-  throw ApiError(404, "no study '" + name + "'", "study");
+  const auto counts = repo_.studies(name);
+  const auto launched = repo_.launchedStudies(name);
+  if (counts.empty() && launched.empty()) throw ApiError(404, "no study '" + name + "'", "study");
+  nlohmann::json study = studyJson(counts.empty() ? StudyCounts{name, {}} : counts.front());
+  if (!launched.empty()) addLaunch(study, launched.front(), true);
+  return study;
+}
+
+std::string RunService::studyText(const std::string& name) {
+  const nlohmann::json summary = study(name);
+  const auto launched = repo_.launchedStudies(name);
+  return launched.empty() ? summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+                          : withSpec(summary, launched.front());
 }
 
 nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }

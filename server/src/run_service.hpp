@@ -15,6 +15,7 @@
 #include "grainlab/server/serve.hpp"
 #include "run_manager.hpp"
 #include "run_query.hpp"
+#include "run_record.hpp"
 #include "series_format.hpp"
 #include "specimen_source.hpp"
 
@@ -24,7 +25,6 @@ class LiveRun;
 class Repository;
 class StreamHub;
 class StreamSink;
-struct RunRecord;
 struct RunEnd;
 
 class RunService {
@@ -46,6 +46,19 @@ class RunService {
   /// no run belongs to it.
   nlohmann::json studies();
   nlohmann::json study(const std::string& name);
+  /// The body of GET /api/studies/{name}: study(name) with a launched study's "spec" as posted.
+  std::string studyText(const std::string& name);
+  /// POST /api/studies (study_launch.cpp): a sweep spec, the JSON of `grainlab sweep`, becomes a
+  /// study of queued runs. Every run is admitted as create() admits one before anything is
+  /// stored: refused whole with 400 naming the spec's field or runs[K].FIELD, 429 when the
+  /// queue has no room for all of it now, 503 past the particle limit; 409 for a name in use.
+  /// Returns the new study's name.
+  std::string launchStudy(const std::string& body);
+  /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does,
+  /// and its interrupted ones (their checkpoints dropped). 200 when every one of them ended
+  /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
+  /// Returns the status and the study's body (studyText).
+  std::pair<int, std::string> cancelStudy(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);
@@ -76,6 +89,18 @@ class RunService {
   void shutdown();
 
  private:
+  /// A run that passed admission: parsed, its specimen staged, within the particle and cost
+  /// limits; ready to be stored and queued.
+  struct AdmittedRun {
+    RunRecord record;
+    Scene scene;
+    std::optional<StagedSpecimen> specimen;
+  };
+  /// Every check POST /api/runs makes of a scene but the queue's room; throws ApiError.
+  AdmittedRun admit(nlohmann::json sceneJson, std::string preset);
+  /// A stored admitted run: its specimen kept, queued. Throws ApiError (503, 429) having
+  /// taken nothing back; the caller deletes the run.
+  void startAdmitted(std::int64_t id, AdmittedRun& run);
   void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene, bool resume);
   /// Queues again, in their order, the runs the database holds as queued: they were waiting
   /// when the server last stopped or was killed (a queued run with a checkpoint was waiting
@@ -110,6 +135,7 @@ class RunService {
   std::mutex liveMutex_;
   std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;
   bool stopped_ = false;
+  std::mutex studyMutex_;  ///< one study launched or cancelled at a time
   double startedAt_;
 };
 

@@ -1,6 +1,7 @@
 #include "study_summary.hpp"
 
 #include "run_query.hpp"
+#include "run_service.hpp"
 
 namespace grainlab::server {
 
@@ -31,7 +32,23 @@ nlohmann::json studyJson(const StudyCounts& study) {
           {"by_status", std::move(byStatus)},
           {"status", toString(status)},
           {"progress", total ? double(ended) / double(total) : 0.0},
-          {"runs_url", "/api/runs?" + runQueryString(runs, 0)}};
+          {"runs_url", "/api/runs?" + runQueryString(runs, 0)},
+          {"source", "imported"}};
+}
+
+void addLaunch(nlohmann::json& study, const StudyRecord& launched, bool detail) {
+  study["source"] = "launched";
+  study["created_at"] = isoTime(launched.createdAt);
+  study["cancelled"] = launched.status == "cancelled";
+  if (!detail) return;
+  study["run_parameters"] = nlohmann::json::parse(launched.runs, nullptr, false);
+}
+
+std::string withSpec(const nlohmann::json& study, const StudyRecord& launched) {
+  std::string text = study.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  text.pop_back();  // the object's closing brace
+  // (stored as the ordered dump of a spec that parsed: valid JSON)
+  return text + ",\"spec\":" + launched.spec + "}";
 }
 
 }  // namespace grainlab::server

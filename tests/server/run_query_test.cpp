@@ -226,9 +226,9 @@ TEST(RunQuery, AnOlderDatabaseGainsTheIndexesAndItsImportedStudies) {
     Database db(path, true);
     db.exec("DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
             "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
-            "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study;");
-    // The version before the one that adds them (the last migration).
-    db.exec(("PRAGMA user_version = " + std::to_string(Repository::schemaVersion() - 1)).c_str());
+            "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study; DROP TABLE studies;");
+    // The version before the one that adds them (schema 7).
+    db.exec("PRAGMA user_version = 6");
   }
   Repository repo(path);
   EXPECT_EQ(repo.findRun(imported)->study, "friction");

@@ -60,8 +60,13 @@ export const api = {
     }
     return request('GET', `/api/runs?${query}`);
   },
-  /** [{name, runs, by_status, status, progress, runs_url}]: the imported sweeps. */
+  /** [{name, runs, by_status, status, progress, runs_url, source}]: launched and imported studies. */
   studies: async () => (await request('GET', '/api/studies')).studies,
+  /** One study; a launched one with its spec and run_parameters. */
+  study: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}`),
+  /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
+  launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
+  cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
   run: (id) => request('GET', runPath(id)),
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,
