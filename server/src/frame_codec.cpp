@@ -148,8 +148,13 @@ nlohmann::json shapesMessage(const World& world) {
   nlohmann::json walls = nlohmann::json::array();
   for (const auto& w : world.walls())
     walls.push_back({{"point", {w.point.x(), w.point.y()}}, {"normal", {w.normal.x(), w.normal.y()}}});
+  return shapesMessage(std::move(shapes), std::move(boundary), std::move(walls));
+}
+
+nlohmann::json shapesMessage(nlohmann::json shapes, nlohmann::json boundary, nlohmann::json walls) {
+  const auto count = shapes.size();
   return {{"type", "shapes"},
-          {"count", world.size()},
+          {"count", count},
           {"shapes", std::move(shapes)},
           {"boundary", std::move(boundary)},
           {"walls", std::move(walls)}};

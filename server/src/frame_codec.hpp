@@ -50,5 +50,7 @@ DecodedFrame decodeFrame(const std::string& bytes);
 /// {"type":"shapes","count":N,"shapes":[{"disc":r} | {"polygon":[x0,y0,x1,y1,...]}],
 ///  "boundary":[indices],"walls":[{"point":[x,y],"normal":[x,y]}]}.
 nlohmann::json shapesMessage(const World& world);
+/// The same message from its parts, for a run that has no World (an imported one).
+nlohmann::json shapesMessage(nlohmann::json shapes, nlohmann::json boundary, nlohmann::json walls);
 
 }  // namespace grainlab::server

@@ -53,19 +53,15 @@ class DatabaseFrames final : public lammps::ImportObserver {
       particles_ = frame.particles;
       nlohmann::json shapes = nlohmann::json::array();
       for (int k = 0; k < frame.particles; ++k) shapes.push_back({{"disc", frame.radii[static_cast<std::size_t>(k)]}});
-      const nlohmann::json message = {{"type", "shapes"},
-                                      {"count", frame.particles},
-                                      {"shapes", std::move(shapes)},
-                                      {"boundary", nlohmann::json::array()},
-                                      {"walls", nlohmann::json::array()}};
-      repo_.setShapes(runId_, frame.particles, message.dump());
+      repo_.setShapes(runId_, frame.particles,
+                      shapesMessage(std::move(shapes), nlohmann::json::array(), nlohmann::json::array()).dump());
     }
     if (frame.particles != particles_) {
       ++framesSkipped_;
       return;
     }
     const auto n = static_cast<std::size_t>(frame.particles);
-    angles_.assign(n, 0.0);  // discs: the dump has no orientation to draw
+    angles_.resize(n, 0.0);  // discs: the dump has no orientation to draw
     lastFrame_ = encodeFrame(row.step, row.time, std::span<const Vec2>(frame.centroids.data(), n), angles_,
                              frame.contacts);
     lastFrameTime_ = row.time;

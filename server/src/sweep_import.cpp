@@ -81,7 +81,6 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
                                  ? spec["base"]["preset"].get<std::string>()
                                  : std::string();
 
-
   SweepImport outcome;
   for (const nlohmann::json& entry : sweep["runs"]) {
     const std::string id = entry.at("id").get<std::string>();
