@@ -175,6 +175,10 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (!read) return methodNotAllowed(method, path, "GET, HEAD");
     return textResponse(200, "application/json", service_.studyText(std::string(seg[2])));
   }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "bands") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    return textResponse(200, "application/json", service_.studyBands(std::string(seg[2]), query));
+  }
   if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "cancel") {
     if (method != "POST") return methodNotAllowed(method, path, "POST");
     auto [status, study] = service_.cancelStudy(std::string(seg[2]));

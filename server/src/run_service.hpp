@@ -59,6 +59,11 @@ class RunService {
   /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
   /// Returns the status and the study's body (studyText).
   std::pair<int, std::string> cancelStudy(const std::string& name);
+  /// GET /api/studies/{name}/bands (study_bands_service.cpp): its completed runs' ensemble
+  /// bands of `quantity` (default phi) against axial strain, grouped by the varied path
+  /// `group` (default the first that is not the seed; "" one group). 404 unknown study, 400
+  /// naming a bad parameter.
+  std::string studyBands(const std::string& name, const QueryParameters& query);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);
