@@ -127,6 +127,20 @@ constexpr const char* kStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study > '' GROUP BY study, status ORDER BY study";
 constexpr const char* kOneStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study = :study GROUP BY study, status";
+// A study's pace: its completed runs' estimates against their wall times, and the estimated
+// work its queued and running runs have left (runs_by_study).
+constexpr const char* kStudyPace =
+    "SELECT "
+    "COALESCE(SUM(status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL), 0), "
+    "COALESCE(SUM(CASE WHEN status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL "
+    "THEN estimated_seconds END), 0), "
+    "COALESCE(SUM(CASE WHEN status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL "
+    "THEN wall_seconds END), 0), "
+    "COALESCE(SUM(status IN ('queued', 'running')), 0), "
+    "COALESCE(SUM(status IN ('queued', 'running') AND estimated_seconds IS NULL), 0), "
+    "COALESCE(SUM(CASE WHEN status IN ('queued', 'running') "
+    "THEN estimated_seconds * (1 - MIN(MAX(progress, 0), 1)) END), 0) "
+    "FROM runs WHERE study = :study";
 constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status FROM studies ORDER BY name";
 constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
 constexpr const char* kInsertStudy =
@@ -598,6 +612,21 @@ std::vector<StudyCounts> Repository::studies(const std::string& only) {
     out.back().byStatus[use.textAt(1)] = use.int64At(2);
   }
   return out;
+}
+
+StudyPace Repository::studyPace(const std::string& study) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kStudyPace).use();
+  use.bindText(":study", study);
+  StudyPace pace;
+  if (!use.step()) return pace;
+  pace.finished = use.int64At(0);
+  pace.finishedEstimated = use.doubleAt(1);
+  pace.finishedWall = use.doubleAt(2);
+  pace.unfinished = use.int64At(3);
+  pace.unestimated = use.int64At(4);
+  pace.unfinishedEstimated = use.doubleAt(5);
+  return pace;
 }
 
 std::optional<RunRecord> Repository::findRun(std::int64_t id) {

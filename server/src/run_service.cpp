@@ -540,10 +540,17 @@ nlohmann::json RunService::list(const RunQuery& query) {
 nlohmann::json RunService::studies() {
   // Imported sweeps have runs only; a launched study is listed even once its runs are deleted.
   std::map<std::string, nlohmann::json> byName;
-  for (const StudyCounts& study : repo_.studies()) byName[study.study] = studyJson(study);
+  for (const StudyCounts& study : repo_.studies()) {
+    byName[study.study] = studyJson(study);
+    addTimeLeft(byName[study.study], underWay(byName[study.study]) ? repo_.studyPace(study.study) : StudyPace{},
+                manager_.maxConcurrent());
+  }
   for (const StudyRecord& launched : repo_.launchedStudies()) {
     auto& study = byName[launched.name];
-    if (study.is_null()) study = studyJson(StudyCounts{launched.name, {}});
+    if (study.is_null()) {
+      study = studyJson(StudyCounts{launched.name, {}});
+      addTimeLeft(study, StudyPace{}, manager_.maxConcurrent());
+    }
     addLaunch(study, launched, false);
   }
   nlohmann::json out = nlohmann::json::array();
@@ -556,6 +563,7 @@ nlohmann::json RunService::study(const std::string& name) {
   const auto launched = repo_.launchedStudies(name);
   if (counts.empty() && launched.empty()) throw ApiError(404, "no study '" + name + "'", "study");
   nlohmann::json study = studyJson(counts.empty() ? StudyCounts{name, {}} : counts.front());
+  addTimeLeft(study, underWay(study) ? repo_.studyPace(name) : StudyPace{}, manager_.maxConcurrent());
   if (!launched.empty()) addLaunch(study, launched.front(), true);
   return study;
 }

@@ -133,6 +133,10 @@ await runBrowserTest([], async ({ server, browser }) => {
   await page.getByRole('button', { name: 'Launch study' }).click();
   const cancelRow = page.locator('tr[data-study="to-cancel"]');
   await waitUntil(async () => (await cancelRow.count()) === 1 && /running/.test(await cancelRow.locator('.status').textContent()), 30);
+  const left = cancelRow.locator('.time-left');
+  check('a running study shows its time left in the list', (await left.count()) === 1
+    && /^(about|at least) \d+ (s|min \d+ s|h \d+ min) left$/.test(await left.textContent()),
+    (await left.count()) ? await left.textContent() : 'none');
   await cancelRow.getByRole('button', { name: 'Cancel' }).click();
   const cancelled = await waitUntil(async () => /cancelled/.test(await cancelRow.locator('.status').textContent()), 60);
   const after = await json('/api/studies/to-cancel');

@@ -4,6 +4,7 @@
 // server's refusal beside the row it names; cancel. A study's name opens its page
 // (#/studies/NAME, study_view.js) and its run count the runs list filtered by it.
 import { api } from '../api.js';
+import { timeLeft } from '../format.js';
 import { h, replaceChildren } from '../dom.js';
 import { parseValues, runCount, sweepSpec } from '../study_spec.js';
 
@@ -153,6 +154,8 @@ export function studiesView(root) {
       const pct = `${Math.round(s.progress * 100)}%`;
       replaceChildren(cells.progress, h('span', { class: 'progress' },
         h('span', { class: 'bar' }, h('span', { style: { width: pct } })), h('span', { class: 'label' }, pct)));
+      const left = UNDER_WAY.has(s.status) ? timeLeft(s) : null;
+      if (left) cells.progress.append(' ', h('span', { class: 'time-left', title: left.title, dataset: { seconds: String(s.seconds_left) } }, left.text));
       const by = s.by_status;
       replaceChildren(cells.counts,
         h('a', { href: `#/runs?study=${encodeURIComponent(s.name)}`, title: 'its runs' },

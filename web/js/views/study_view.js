@@ -8,7 +8,7 @@ import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
 import { ChartPanel, joinTables } from '../chart_panel.js';
 import { COMPARE_CHARTS, X_AXES } from '../chart_specs.js';
-import { sig } from '../format.js';
+import { sig, timeLeft } from '../format.js';
 
 const POLL_MS = 2000;
 const UNDER_WAY = new Set(['running', 'queued']);
@@ -132,10 +132,12 @@ export function studyView(root, name) {
       }
     } }, 'Cancel study') : null;
     const pct = `${Math.round(study.progress * 100)}%`;
+    const left = UNDER_WAY.has(study.status) ? timeLeft(study) : null;
     replaceChildren(summary,
       h('span', { class: `status ${study.status}` }, study.status), ' ',
       h('span', { class: 'progress' }, h('span', { class: 'bar' }, h('span', { style: { width: pct } })), h('span', { class: 'label' }, pct)), ' ',
       h('span', { class: 'study-counts' }, `${by.completed ?? 0} done · ${by.running ?? 0} running · ${(by.failed ?? 0) + (by.interrupted ?? 0)} failed · ${by.queued ?? 0} queued of ${study.runs}`),
+      ' ', left ? h('span', { class: 'time-left', title: left.title, dataset: { seconds: String(study.seconds_left) } }, left.text) : null,
       ' ', cancel,
       study.spec ? h('details', {}, h('summary', {}, 'Spec'), h('pre', {}, JSON.stringify(study.spec, null, 2))) : null);
     const parameters = new Map((study.run_parameters ?? []).map((r) => [r.id, r.parameters]));
