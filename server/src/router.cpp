@@ -179,6 +179,11 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (!read) return methodNotAllowed(method, path, "GET, HEAD");
     return textResponse(200, "application/json", service_.studyBands(std::string(seg[2]), query));
   }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "resume") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    auto [status, study] = service_.resumeStudy(std::string(seg[2]));
+    return textResponse(status, "application/json", std::move(study));
+  }
   if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "cancel") {
     if (method != "POST") return methodNotAllowed(method, path, "POST");
     auto [status, study] = service_.cancelStudy(std::string(seg[2]));

@@ -375,7 +375,12 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     end.error = hasCheckpoint(id) ? "the server stopped before the run ended; it can be resumed"
                                   : "the server stopped before the run ended (no checkpoint: it cannot be resumed)";
   }
-  if (end.status == RunStatus::Cancelled) removeCheckpoint(id);  // cancelled means not wanted
+  // Cancelled means not wanted, unless the run is a study's: the study may be resumed
+  // (POST /api/studies/{name}/resume), from here. Deleting the run drops it.
+  if (end.status == RunStatus::Cancelled) {
+    const auto stored = repo_.findRun(id);
+    if (!stored || stored->study.empty()) removeCheckpoint(id);
+  }
   const auto state = run->state();
   end.stage = state.stage;
   end.finishedAt = unixNow();

@@ -59,6 +59,11 @@ class RunService {
   /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
   /// Returns the status and the study's body (studyText).
   std::pair<int, std::string> cancelStudy(const std::string& name);
+  /// POST /api/studies/{name}/resume (study_resume.cpp): its cancelled and interrupted runs
+  /// queued again, each from its checkpoint where it has one (a study's cancelled run keeps
+  /// its checkpoint for this), else from the start. 202 with the study's body; 404 unknown,
+  /// 409 when no run is left to resume, 429 when the queue has no room for all of them.
+  std::pair<int, std::string> resumeStudy(const std::string& name);
   /// GET /api/studies/{name}/bands (study_bands_service.cpp): its completed runs' ensemble
   /// bands of `quantity` (default phi) against axial strain, grouped by the varied path
   /// `group` (default the first that is not the seed; "" one group). 404 unknown study, 400

@@ -177,8 +177,9 @@ std::pair<int, std::string> RunService::cancelStudy(const std::string& name) {
       }
     }
   }
-  // An interrupted run is the study's unfinished work too: cancelled with it, its checkpoint
-  // dropped, so that no later `--resume-interrupted` runs it on. What it stored is kept.
+  // An interrupted run is the study's unfinished work too: cancelled with it, so that no later
+  // `--resume-interrupted` runs it on. What it stored is kept, and its checkpoint, for
+  // POST /api/studies/{name}/resume (study_resume.cpp).
   RunQuery interrupted;
   interrupted.study = name;
   interrupted.statuses = {RunStatus::Interrupted};
@@ -196,7 +197,6 @@ std::pair<int, std::string> RunService::cancelStudy(const std::string& name) {
     end.peakPhiMobDeg = run.peakPhiMobDeg;
     end.warnings = run.warnings;
     repo_.finishRun(run.id, end, nullptr);
-    removeCheckpoint(run.id);
     ++ended;
   }
   if (ended + stopping == 0) throw ApiError(409, "study '" + name + "' has no queued, running or interrupted run", "study");
