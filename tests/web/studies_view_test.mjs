@@ -143,5 +143,13 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('Cancel on the list cancels the study, shown there', Boolean(cancelled) && after.cancelled === true && after.status === 'cancelled',
     JSON.stringify(after.by_status));
   check('...its queued runs never ran', (after.by_status.cancelled ?? 0) >= 2, JSON.stringify(after.by_status));
+  // Resume from the list: the cancelled study's runs queued again.
+  await cancelRow.getByRole('button', { name: 'Resume' }).click();
+  const resumed = await waitUntil(async () => /running|queued/.test(await cancelRow.locator('.status').textContent()), 30);
+  const again = await json('/api/studies/to-cancel');
+  check('Resume on the list queues the cancelled study again', Boolean(resumed) && again.cancelled === false
+    && (again.by_status.running ?? 0) + (again.by_status.queued ?? 0) === 3, JSON.stringify(again.by_status));
+  await cancelRow.getByRole('button', { name: 'Cancel' }).click();
+  await waitUntil(async () => /cancelled/.test(await cancelRow.locator('.status').textContent()), 60);
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
 });

@@ -67,6 +67,8 @@ export const api = {
   /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
   launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
   cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
+  /** A cancelled or interrupted study's runs queued again, from their checkpoints where they have one. */
+  resumeStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/resume`),
   /**
    * A study's ensemble bands, computed on the server from its completed runs' series:
    * {quantity, title, group_by, paths, runs, grid, groups: [{value, ids, mean, low, high, n}]}.

@@ -11,6 +11,8 @@ import { parseValues, runCount, sweepSpec } from '../study_spec.js';
 const POLL_MS = 2000;
 const DEFAULT_PRESET = 'circular-quick';
 const UNDER_WAY = new Set(['running', 'queued']);
+// A study with a run cancelled or interrupted (and none under way) can be resumed.
+const RESUMABLE = new Set(['cancelled', 'interrupted']);
 
 export function studiesView(root) {
   const tableBody = h('tbody');
@@ -147,6 +149,15 @@ export function studiesView(root) {
         listError.hidden = false;
       }
     } }, 'Cancel');
+    const resumeButton = h('button', { type: 'button', onclick: async () => {
+      try {
+        await api.resumeStudy(study.name);
+        refresh();
+      } catch (error) {
+        listError.textContent = `Resuming ${study.name} failed: ${error.message}`;
+        listError.hidden = false;
+      }
+    } }, 'Resume');
     function update(s) {
       replaceChildren(cells.name, h('a', { href: `#/studies/${encodeURIComponent(s.name)}` }, s.name));
       cells.source.textContent = s.source ?? 'imported';
@@ -161,7 +172,7 @@ export function studiesView(root) {
         h('a', { href: `#/runs?study=${encodeURIComponent(s.name)}`, title: 'its runs' },
           `${by.completed ?? 0} done · ${by.running ?? 0} running · ${(by.failed ?? 0) + (by.interrupted ?? 0)} failed · ${by.queued ?? 0} queued`,
           by.cancelled ? ` · ${by.cancelled} cancelled` : '', ` of ${s.runs}`));
-      replaceChildren(cells.actions, UNDER_WAY.has(s.status) ? cancelButton : null);
+      replaceChildren(cells.actions, UNDER_WAY.has(s.status) ? cancelButton : RESUMABLE.has(s.status) ? resumeButton : null);
     }
     return { element, update };
   }

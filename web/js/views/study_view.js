@@ -12,6 +12,8 @@ import { sig, timeLeft } from '../format.js';
 
 const POLL_MS = 2000;
 const UNDER_WAY = new Set(['running', 'queued']);
+// A study with a run cancelled or interrupted (and none under way) can be resumed.
+const RESUMABLE = new Set(['cancelled', 'interrupted']);
 const BAND_COLOURS = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000'];
 // The runs table shows this many; the runs list (filtered by study) pages through the rest.
 const RUNS_SHOWN = 200;
@@ -130,7 +132,15 @@ export function studyView(root, name) {
         message.textContent = `Cancelling failed: ${error.message}`;
         message.hidden = false;
       }
-    } }, 'Cancel study') : null;
+    } }, 'Cancel study') : RESUMABLE.has(study.status) ? h('button', { type: 'button', onclick: async () => {
+      try {
+        await api.resumeStudy(name);
+        refresh();
+      } catch (error) {
+        message.textContent = `Resuming failed: ${error.message}`;
+        message.hidden = false;
+      }
+    } }, 'Resume study') : null;
     const pct = `${Math.round(study.progress * 100)}%`;
     const left = UNDER_WAY.has(study.status) ? timeLeft(study) : null;
     replaceChildren(summary,
