@@ -111,6 +111,13 @@ constexpr const char* kMigrations[] = {
       status      TEXT NOT NULL
     );
     )sql",
+    // 8 -> 9: the paper studies (POST /api/studies {"paper": ...}): a run's void ratio after
+    // consolidation, which finding 7 judges (summary.json's), and a study's findings once
+    // computed (JSON, study_findings.cpp).
+    R"sql(
+    ALTER TABLE runs ADD COLUMN void_ratio_after_consolidation REAL;
+    ALTER TABLE studies ADD COLUMN findings TEXT;
+    )sql",
 };
 
 // Every statement the server runs, by name.
@@ -145,6 +152,11 @@ constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, s
 constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
 constexpr const char* kInsertStudy =
     "INSERT INTO studies (name, spec, runs, created_at, status) VALUES (:name, :spec, :runs, :created_at, :status)";
+constexpr const char* kSetStudyFindings = "UPDATE studies SET findings = :findings WHERE name = :name";
+constexpr const char* kStudyFindings = "SELECT findings FROM studies WHERE name = :name AND findings IS NOT NULL";
+constexpr const char* kSetVoidRatio = "UPDATE runs SET void_ratio_after_consolidation = :e WHERE id = :id";
+constexpr const char* kVoidRatio =
+    "SELECT void_ratio_after_consolidation FROM runs WHERE id = :id AND void_ratio_after_consolidation IS NOT NULL";
 constexpr const char* kSetStudyStatus = "UPDATE studies SET status = :status WHERE name = :name";
 constexpr const char* kDeleteStudy = "DELETE FROM studies WHERE name = :name";
 constexpr const char* kFindRun =
@@ -764,6 +776,38 @@ void Repository::setStudyStatus(const std::string& name, const std::string& stat
     use.bindText(":name", name).bindText(":status", status);
     use.run();
   });
+}
+
+void Repository::setStudyFindings(const std::string& name, const std::string& findings) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetStudyFindings).use();
+    use.bindText(":name", name).bindText(":findings", findings);
+    use.run();
+  });
+}
+
+std::optional<std::string> Repository::studyFindings(const std::string& name) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kStudyFindings).use();
+  use.bindText(":name", name);
+  if (!use.step()) return std::nullopt;
+  return use.textAt(0);
+}
+
+void Repository::setVoidRatio(std::int64_t id, double voidRatio) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetVoidRatio).use();
+    use.bind(":id", id).bind(":e", voidRatio);
+    use.run();
+  });
+}
+
+std::optional<double> Repository::voidRatio(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kVoidRatio).use();
+  use.bind(":id", id);
+  if (!use.step()) return std::nullopt;
+  return use.doubleAt(0);
 }
 
 void Repository::deleteStudy(const std::string& name) {

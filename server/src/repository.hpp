@@ -125,6 +125,13 @@ class Repository {
   /// study.runs' entries get their run's "id".
   std::future<std::vector<std::int64_t>> insertStudy(const StudyRecord& study, const std::vector<RunRecord>& runs);
   void setStudyStatus(const std::string& name, const std::string& status);
+  /// A paper study's findings, once computed (study_findings.cpp); studyFindings() reads them.
+  void setStudyFindings(const std::string& name, const std::string& findings);
+  std::optional<std::string> studyFindings(const std::string& name);
+  /// A run's void ratio after consolidation (RunSummary's; -1 or none when it has none), as
+  /// summary.json keeps it: what a paper study's finding 7 judges.
+  void setVoidRatio(std::int64_t id, double voidRatio);
+  std::optional<double> voidRatio(std::int64_t id);
   /// The study's row only (its runs are deleted one by one): a launch taken back.
   void deleteStudy(const std::string& name);
   void markStarted(std::int64_t id, double startedAt);

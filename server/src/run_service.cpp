@@ -400,6 +400,8 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     forget(id);
     return;
   }
+  // Queued before the end, so whoever sees the run ended finds it stored.
+  repo_.setVoidRatio(id, summary.voidRatioAfterConsolidation);
   repo_.finishRun(id, end, [this, run, end] { published(run, end); });
 }
 
