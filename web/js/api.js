@@ -67,6 +67,8 @@ export const api = {
   /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
   launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
   cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
+  /** A paper study's findings ({findings: [{number, claim, verdict, checks: [...]}], csv}), once its runs have ended. */
+  studyFindings: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}/findings`),
   /** A cancelled or interrupted study's runs queued again, from their checkpoints where they have one. */
   resumeStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/resume`),
   /**

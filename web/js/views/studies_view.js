@@ -133,6 +133,41 @@ export function studiesView(root) {
     h('div', { class: 'form-actions' }, launchButton, count),
     formError);
 
+  // ---- the paper: its six assemblies x N seeds, as `grainlab paper` runs them ----
+  const paperName = h('input', { id: 'paper-name', type: 'text', autocomplete: 'off', placeholder: 'e.g. paper-8 (empty: paper-N-seeds)' });
+  const paperSeeds = h('input', { id: 'paper-seeds', type: 'number', min: '1', step: '1', value: '1' });
+  const paperQuick = h('input', { id: 'paper-quick', type: 'checkbox', checked: true });
+  const paperError = h('div', { class: 'form-error', hidden: true });
+  const paperButton = h('button', { type: 'submit', class: 'primary' }, 'Launch the paper');
+  async function launchPaper() {
+    paperError.hidden = true;
+    const seeds = Number(paperSeeds.value);
+    const body = { paper: { seeds: Number.isInteger(seeds) ? seeds : paperSeeds.value, quick: paperQuick.checked } };
+    if (paperName.value.trim()) body.name = paperName.value.trim();
+    paperButton.disabled = true;
+    try {
+      const study = await api.launchStudy(body);
+      paperName.value = '';
+      await refresh();
+      paperError.textContent = '';
+      count.textContent = `launched ${study.name}: ${study.runs} runs`;
+    } catch (error) {
+      paperError.textContent = error.field ? `${error.field}: ${error.message}` : error.message;
+      paperError.hidden = false;
+    } finally {
+      paperButton.disabled = false;
+    }
+  }
+  const paperForm = h('form', { class: 'panel paper-form', novalidate: true, onsubmit: (event) => { event.preventDefault(); launchPaper(); } },
+    h('h3', {}, 'Launch the paper'),
+    h('div', { class: 'hint' }, 'The paper\'s six biaxial tests (circular, random, bedded at 0, 30, 60, 90°), each with seeds 1 to N, as grainlab paper runs them; once they have run, the study\'s page shows the findings.'),
+    h('div', { class: 'form-grid' },
+      h('label', { for: 'paper-name' }, 'Name'), h('div', { class: 'field-input' }, paperName),
+      h('label', { for: 'paper-seeds' }, 'Seeds'), h('div', { class: 'field-input' }, paperSeeds),
+      h('label', { for: 'paper-quick' }, 'Quick presets'), h('div', { class: 'field-input' }, paperQuick)),
+    h('div', { class: 'form-actions' }, paperButton),
+    paperError);
+
   // ---- the list ----
   const rowsByName = new Map();
   function studyRow(study) {
@@ -220,7 +255,7 @@ export function studiesView(root) {
         h('thead', {}, h('tr', {}, ['Study', 'Source', 'Status', 'Progress', 'Runs', ''].map((t) => h('th', {}, t)))),
         tableBody),
       empty, listError),
-    form);
+    form, paperForm);
 
   (async () => {
     try {

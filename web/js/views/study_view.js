@@ -59,6 +59,15 @@ export function studyView(root, name) {
   const bandTable = h('tbody');
   const download = h('a', { class: 'button', download: `${name}.csv`, href: '#', hidden: true }, 'Download CSV');
   const ensembleHint = h('div', { class: 'hint' });
+  // A paper study's findings, once its runs have ended (GET /api/studies/NAME/findings).
+  const findingsBody = h('tbody');
+  const findingsHint = h('div', { class: 'hint' });
+  const findingsDownload = h('a', { class: 'button', download: `${name}-findings.csv`, href: '#', hidden: true }, 'Download findings.csv');
+  const findingsPanel = h('div', { class: 'panel study-findings', hidden: true },
+    h('h3', {}, 'Findings'), findingsHint, findingsDownload,
+    h('table', { class: 'runs findings' },
+      h('thead', {}, h('tr', {}, ['#', 'Claim', 'Verdict', 'Subject', 'Estimate', '95 % interval', 'Check'].map((t) => h('th', {}, t)))),
+      findingsBody));
   replaceChildren(root,
     h('div', { class: 'view-title' }, title, h('a', { href: '#/studies' }, 'All studies'),
       h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'Its runs in the runs list')),
@@ -72,6 +81,7 @@ export function studyView(root, name) {
       h('table', { class: 'runs study-bands' },
         h('thead', {}, h('tr', {}, ['Value', 'Runs', 'Axial strain (%)', 'Mean', '95 % band'].map((t) => h('th', {}, t)))),
         bandTable)),
+    findingsPanel,
     h('div', { class: 'panel' }, h('h3', {}, 'Runs'),
       h('table', { class: 'runs study-runs' }, h('thead', {}, h('tr', {}, ['#', 'Run', 'Values', 'Status'].map((t) => h('th', {}, t)))), runsBody)));
   quantitySelect.value = 'phi';
@@ -93,11 +103,37 @@ export function studyView(root, name) {
       message.hidden = true;
       showSummary(page);
       await loadBands();
+      if (study.spec?.paper && !findings && !UNDER_WAY.has(study.status)) await loadFindings();
     } catch (error) {
       message.textContent = `The study cannot be loaded: ${error.message}`;
       message.hidden = false;
     }
     if (!destroyed && (!study || UNDER_WAY.has(study.status))) timer = setTimeout(refresh, POLL_MS);
+  }
+
+  let findings = null;
+  async function loadFindings() {
+    findingsPanel.hidden = false;
+    try {
+      findings = await api.studyFindings(name);
+    } catch (error) {
+      findingsHint.textContent = `No findings: ${error.message}`;
+      return;
+    }
+    if (destroyed) return;
+    const estimate = (v) => (v === null ? '–' : sig(v, 4));
+    findingsHint.textContent = `The paper's claims judged on ${findings.runs} runs (${findings.seeds} seed${findings.seeds === 1 ? '' : 's'} of each assembly${findings.quick ? ', quick presets' : ''}) by grainlab paper's code.`;
+    replaceChildren(findingsBody, findings.findings.flatMap((f) => f.checks.map((c, k) => h('tr', { dataset: { finding: String(f.number) } },
+      h('td', {}, k === 0 ? String(f.number) : ''),
+      h('td', { title: f.criterion }, k === 0 ? f.claim : ''),
+      h('td', { class: 'finding-verdict' }, k === 0 ? f.verdict : ''),
+      h('td', {}, c.subject),
+      h('td', { class: 'finding-value', title: c.quantity, dataset: { value: String(c.value) } }, estimate(c.value)),
+      h('td', {}, c.ci_low === null ? '–' : `${estimate(c.ci_low)} … ${estimate(c.ci_high)}`),
+      h('td', { title: c.measured }, c.verdict)))));
+    URL.revokeObjectURL(findingsDownload.href);
+    findingsDownload.href = URL.createObjectURL(new Blob([findings.csv], { type: 'text/csv' }));
+    findingsDownload.hidden = false;
   }
 
   // Asks again only when the choice or the number of completed runs changed.
@@ -158,7 +194,7 @@ export function studyView(root, name) {
       h('td', {}, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status)))),
     page.total > page.runs.length ? h('tr', { class: 'more' }, h('td', { colspan: 4 },
       `The first ${page.runs.length} of ${page.total}: `, h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'all of them in the runs list'))) : null);
-    const paths = Object.keys(study.spec?.vary ?? {});
+    const paths = study.spec?.paper ? ['preset', 'seed'] : Object.keys(study.spec?.vary ?? {});
     if (pathSelect.options.length !== paths.length + 1) {
       replaceChildren(pathSelect, h('option', { value: '' }, '(all runs together)'), paths.map((p) => h('option', { value: p }, p)));
       // The first varied path that is not the seed: seeds are what an ensemble averages over.
