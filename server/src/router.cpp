@@ -172,7 +172,8 @@ ApiResponse Router::route(const ApiRequest& request) {
     return r;
   }
   if (seg.size() == 3 && seg[1] == "studies") {
-    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    if (method == "DELETE") return textResponse(service_.deleteStudy(std::string(seg[2])), "application/json", {});
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD, DELETE");
     return textResponse(200, "application/json", service_.studyText(std::string(seg[2])));
   }
   if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "findings") {

@@ -74,6 +74,10 @@ class RunService {
   /// its checkpoint for this), else from the start. 202 with the study's body; 404 unknown,
   /// 409 when no run is left to resume, 429 when the queue has no room for all of them.
   std::pair<int, std::string> resumeStudy(const std::string& name);
+  /// DELETE /api/studies/{name} (study_delete.cpp): every run of it as remove() deletes one,
+  /// then the study's row. 204 once all is gone, 202 if a running run is still stopping (it
+  /// deletes itself when it has); 404 unknown.
+  int deleteStudy(const std::string& name);
   /// GET /api/studies/{name}/bands (study_bands_service.cpp): its completed runs' ensemble
   /// bands of `quantity` (default phi) against axial strain, grouped by the varied path
   /// `group` (default the first that is not the seed; "" one group). 404 unknown study, 400
