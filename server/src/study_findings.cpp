@@ -86,12 +86,17 @@ std::string RunService::studyFindings(const std::string& name) {
   for (const auto& entry : listed) {
     const auto run = storedRun(entry.value("id", std::int64_t{0}));
     if (!run) throw ApiError(409, "run " + entry.value("name", std::string()) + " was deleted: the findings need every run", "study");
-    if (!hasEnded(run->status) || live(run->id)) ++unfinished;
+    // A cancelled or interrupted run may still be resumed (POST .../resume): the findings
+    // wait for it, so that the ones kept are never those of a study that went on after.
+    if (!hasEnded(run->status) || live(run->id) || run->status == RunStatus::Cancelled ||
+        run->status == RunStatus::Interrupted)
+      ++unfinished;
     runs.push_back(*run);
   }
   if (unfinished > 0)
     throw ApiError(409, std::to_string(unfinished) + " of the study's " + std::to_string(runs.size()) +
-                            " runs have not ended: the findings are computed once every run has",
+                            " runs have not ended (or were cancelled or interrupted: resume the study): the findings "
+                            "are computed once every run has completed or failed",
                    "study");
 
   // Each run as the CLI leaves it on disk, read back by the CLI's loader.
