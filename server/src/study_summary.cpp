@@ -29,7 +29,9 @@ nlohmann::json studyJson(const StudyCounts& study) {
   RunQuery runs;
   runs.study = study.study;
   runs.limit = 50;
-  return {{"name", study.study},
+  // "id": a study's id is its name (GET /api/studies/{id}).
+  return {{"id", study.study},
+          {"name", study.study},
           {"runs", total},
           {"by_status", std::move(byStatus)},
           {"status", toString(status)},

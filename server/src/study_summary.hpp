@@ -8,7 +8,7 @@
 
 namespace grainlab::server {
 
-/// {"name", "runs", "by_status": {"completed": 11, ...}, "status", "progress", "runs_url"}.
+/// {"id" (= name), "name", "runs", "by_status": {"completed": 11, ...}, "status", "progress", "runs_url"}.
 /// status: running or queued while any run is; else failed, interrupted or cancelled if
 /// any run ended so (in that order); else completed. progress: the share of runs ended.
 nlohmann::json studyJson(const StudyCounts& study);
