@@ -3,7 +3,8 @@
 // runs have ended the study's page shows the findings table, one row per check with its
 // estimate and verdict as GET /api/studies/NAME/findings has them, and the CSV download is
 // the server's findings.csv (which tests/server/study_paper_test.sh compares with grainlab
-// paper's). No console errors but the refusal provoked on purpose.
+// paper's). Delete study then removes it with its runs. No console errors but the refusal
+// provoked on purpose.
 import { check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
 
 const NAME = 'paper-from-form';
@@ -49,5 +50,14 @@ await runBrowserTest(['--max-concurrent', '2'], async ({ server, browser }) => {
   const served = await (await fetch(`${base}/api/studies/${NAME}/findings?format=csv`)).text();
   check('the CSV download is the server\'s findings.csv', csv === served && csv.startsWith('number,claim,criterion,verdict'), csv.slice(0, 80));
   await screenshot(page, 'paper-study');
+
+  // Delete from its page (confirmed): the study, its runs and their series go.
+  page.once('dialog', (dialog) => dialog.accept());
+  await page.getByRole('button', { name: 'Delete study' }).click();
+  await waitUntil(async () => page.url().endsWith('#/studies'), 30);
+  const runsLeft = (await json(`/api/runs?study=${NAME}`)).total;
+  const seriesGone = (await fetch(`${base}/api/runs/${study.run_parameters[0].id}/series`)).status;
+  check('Delete study removes it with its runs and series', (await json('/api/studies')).studies.length === 0
+    && runsLeft === 0 && seriesGone === 404, `${runsLeft} runs left, series ${seriesGone}`);
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
 });

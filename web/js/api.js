@@ -67,6 +67,8 @@ export const api = {
   /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
   launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
   cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
+  /** Deletes the study with its runs and their files. */
+  deleteStudy: (name) => request('DELETE', `/api/studies/${encodeURIComponent(name)}`, { expect: 'text' }),
   /** A paper study's findings ({findings: [{number, claim, verdict, checks: [...]}], csv}), once its runs have ended. */
   studyFindings: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}/findings`),
   /** A cancelled or interrupted study's runs queued again, from their checkpoints where they have one. */

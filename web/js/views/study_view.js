@@ -184,7 +184,16 @@ export function studyView(root, name) {
       h('span', { class: 'progress' }, h('span', { class: 'bar' }, h('span', { style: { width: pct } })), h('span', { class: 'label' }, pct)), ' ',
       h('span', { class: 'study-counts' }, `${by.completed ?? 0} done · ${by.running ?? 0} running · ${(by.failed ?? 0) + (by.interrupted ?? 0)} failed · ${by.queued ?? 0} queued of ${study.runs}`),
       ' ', left ? h('span', { class: 'time-left', title: left.title, dataset: { seconds: String(study.seconds_left) } }, left.text) : null,
-      ' ', cancel,
+      ' ', cancel, ' ', h('button', { type: 'button', class: 'danger', onclick: async () => {
+        if (!window.confirm(`Delete the study ${name} with its ${study.runs} runs and everything they stored?`)) return;
+        try {
+          await api.deleteStudy(name);
+          window.location.hash = '#/studies';
+        } catch (error) {
+          message.textContent = `Deleting failed: ${error.message}`;
+          message.hidden = false;
+        }
+      } }, 'Delete study'),
       study.spec ? h('details', {}, h('summary', {}, 'Spec'), h('pre', {}, JSON.stringify(study.spec, null, 2))) : null);
     const parameters = new Map((study.run_parameters ?? []).map((r) => [r.id, r.parameters]));
     replaceChildren(runsBody, page.runs.map((run) => h('tr', { dataset: { runId: String(run.id) } },
