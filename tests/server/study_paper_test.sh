@@ -46,6 +46,15 @@ printf '%s' "$SERVER_CSV" >"$TMP_ROOT/server-findings.csv"
 same_findings() { cmp "$TMP_ROOT/server-findings.csv" "$TMP_ROOT/paper/findings.csv" || { diff "$TMP_ROOT/server-findings.csv" "$TMP_ROOT/paper/findings.csv" | head -20; return 1; }; }
 check "the server's findings.csv is grainlab paper's, byte for byte" same_findings
 
+req GET "/api/studies/paper-q1/bands?quantity=phi"
+check "its bands group by preset: six groups of one run, on 201 strains to 20 %" \
+  test "$(json 'b.group_by + " " + b.groups.map(g => g.ids.length).join("") + " " + b.grid.length + " " + (b.grid[200] >= 20)')" = \
+  "preset 111111 201 true"
+for bad in "quantity=nope quantity" "group=material.friction group" "colour=red colour"; do
+  req GET "/api/studies/paper-q1/bands?${bad% *}"
+  expect "bands?${bad% *}: 400 naming ${bad#* }" 400 "\"field\":\"${bad#* }\""
+done
+
 req GET /api/studies/paper-q1/findings
 FIRST=$BODY
 req GET /api/studies/paper-q1/findings
