@@ -111,6 +111,13 @@ constexpr const char* kMigrations[] = {
       status      TEXT NOT NULL
     );
     )sql",
+    // 8 -> 9: the paper studies (POST /api/studies {"paper": ...}): a run's void ratio after
+    // consolidation, which finding 7 judges (summary.json's), and a study's findings once
+    // computed (JSON, study_findings.cpp).
+    R"sql(
+    ALTER TABLE runs ADD COLUMN void_ratio_after_consolidation REAL;
+    ALTER TABLE studies ADD COLUMN findings TEXT;
+    )sql",
 };
 
 // Every statement the server runs, by name.
@@ -127,10 +134,29 @@ constexpr const char* kStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study > '' GROUP BY study, status ORDER BY study";
 constexpr const char* kOneStudyCounts =
     "SELECT study, status, COUNT(*) FROM runs WHERE study = :study GROUP BY study, status";
+// A study's pace: its completed runs' estimates against their wall times, and the estimated
+// work its queued and running runs have left (runs_by_study).
+constexpr const char* kStudyPace =
+    "SELECT "
+    "COALESCE(SUM(status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL), 0), "
+    "COALESCE(SUM(CASE WHEN status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL "
+    "THEN estimated_seconds END), 0), "
+    "COALESCE(SUM(CASE WHEN status = 'completed' AND estimated_seconds > 0 AND wall_seconds IS NOT NULL "
+    "THEN wall_seconds END), 0), "
+    "COALESCE(SUM(status IN ('queued', 'running')), 0), "
+    "COALESCE(SUM(status IN ('queued', 'running') AND estimated_seconds IS NULL), 0), "
+    "COALESCE(SUM(CASE WHEN status IN ('queued', 'running') "
+    "THEN estimated_seconds * (1 - MIN(MAX(progress, 0), 1)) END), 0) "
+    "FROM runs WHERE study = :study";
 constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status FROM studies ORDER BY name";
 constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
 constexpr const char* kInsertStudy =
     "INSERT INTO studies (name, spec, runs, created_at, status) VALUES (:name, :spec, :runs, :created_at, :status)";
+constexpr const char* kSetStudyFindings = "UPDATE studies SET findings = :findings WHERE name = :name";
+constexpr const char* kStudyFindings = "SELECT findings FROM studies WHERE name = :name AND findings IS NOT NULL";
+constexpr const char* kSetVoidRatio = "UPDATE runs SET void_ratio_after_consolidation = :e WHERE id = :id";
+constexpr const char* kVoidRatio =
+    "SELECT void_ratio_after_consolidation FROM runs WHERE id = :id AND void_ratio_after_consolidation IS NOT NULL";
 constexpr const char* kSetStudyStatus = "UPDATE studies SET status = :status WHERE name = :name";
 constexpr const char* kDeleteStudy = "DELETE FROM studies WHERE name = :name";
 constexpr const char* kFindRun =
@@ -600,6 +626,21 @@ std::vector<StudyCounts> Repository::studies(const std::string& only) {
   return out;
 }
 
+StudyPace Repository::studyPace(const std::string& study) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kStudyPace).use();
+  use.bindText(":study", study);
+  StudyPace pace;
+  if (!use.step()) return pace;
+  pace.finished = use.int64At(0);
+  pace.finishedEstimated = use.doubleAt(1);
+  pace.finishedWall = use.doubleAt(2);
+  pace.unfinished = use.int64At(3);
+  pace.unestimated = use.int64At(4);
+  pace.unfinishedEstimated = use.doubleAt(5);
+  return pace;
+}
+
 std::optional<RunRecord> Repository::findRun(std::int64_t id) {
   auto reader = lease();
   auto use = reader.statement(sql::kFindRun).use();
@@ -735,6 +776,38 @@ void Repository::setStudyStatus(const std::string& name, const std::string& stat
     use.bindText(":name", name).bindText(":status", status);
     use.run();
   });
+}
+
+void Repository::setStudyFindings(const std::string& name, const std::string& findings) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetStudyFindings).use();
+    use.bindText(":name", name).bindText(":findings", findings);
+    use.run();
+  });
+}
+
+std::optional<std::string> Repository::studyFindings(const std::string& name) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kStudyFindings).use();
+  use.bindText(":name", name);
+  if (!use.step()) return std::nullopt;
+  return use.textAt(0);
+}
+
+void Repository::setVoidRatio(std::int64_t id, double voidRatio) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetVoidRatio).use();
+    use.bind(":id", id).bind(":e", voidRatio);
+    use.run();
+  });
+}
+
+std::optional<double> Repository::voidRatio(std::int64_t id) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kVoidRatio).use();
+  use.bind(":id", id);
+  if (!use.step()) return std::nullopt;
+  return use.doubleAt(0);
 }
 
 void Repository::deleteStudy(const std::string& name) {

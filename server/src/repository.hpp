@@ -50,6 +50,17 @@ struct StudyCounts {
   std::map<std::string, std::int64_t> byStatus;
 };
 
+/// What a study's time left is estimated from: its runs' estimated wall times
+/// (RunRecord::estimatedSeconds) and the wall times its completed runs took.
+struct StudyPace {
+  std::int64_t finished = 0;         ///< completed runs with an estimate and a wall time
+  double finishedEstimated = 0;      ///< their estimates, summed
+  double finishedWall = 0;           ///< their wall times, summed
+  std::int64_t unfinished = 0;       ///< queued and running runs
+  std::int64_t unestimated = 0;      ///< of those, the ones without an estimate
+  double unfinishedEstimated = 0;    ///< Σ estimate × (1 − progress) over the unfinished
+};
+
 /// A study launched on this server (POST /api/studies): the spec as given, its runs as a JSON
 /// array ([{"id", "name", "parameters": {path: value}}], in the spec's order) and what was
 /// asked of it: "launched" or "cancelled".
@@ -92,6 +103,8 @@ class Repository {
   /// The studies (imported sweeps) with their runs counted by status, by name; `only`: just
   /// that one (none if no run belongs to it).
   std::vector<StudyCounts> studies(const std::string& only = {});
+  /// The sums a study's time left is estimated from (one pass over its runs).
+  StudyPace studyPace(const std::string& study);
   /// The studies launched here, by name; `only`: just that one (none if it was not launched).
   std::vector<StudyRecord> launchedStudies(const std::string& only = {});
   std::optional<RunRecord> findRun(std::int64_t id);
@@ -112,6 +125,13 @@ class Repository {
   /// study.runs' entries get their run's "id".
   std::future<std::vector<std::int64_t>> insertStudy(const StudyRecord& study, const std::vector<RunRecord>& runs);
   void setStudyStatus(const std::string& name, const std::string& status);
+  /// A paper study's findings, once computed (study_findings.cpp); studyFindings() reads them.
+  void setStudyFindings(const std::string& name, const std::string& findings);
+  std::optional<std::string> studyFindings(const std::string& name);
+  /// A run's void ratio after consolidation (RunSummary's; -1 or none when it has none), as
+  /// summary.json keeps it: what a paper study's finding 7 judges.
+  void setVoidRatio(std::int64_t id, double voidRatio);
+  std::optional<double> voidRatio(std::int64_t id);
   /// The study's row only (its runs are deleted one by one): a launch taken back.
   void deleteStudy(const std::string& name);
   void markStarted(std::int64_t id, double startedAt);

@@ -172,8 +172,26 @@ ApiResponse Router::route(const ApiRequest& request) {
     return r;
   }
   if (seg.size() == 3 && seg[1] == "studies") {
-    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    if (method == "DELETE") return textResponse(service_.deleteStudy(std::string(seg[2])), "application/json", {});
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD, DELETE");
     return textResponse(200, "application/json", service_.studyText(std::string(seg[2])));
+  }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "findings") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    const auto format = query.contains("format") ? query.at("format") : std::string("json");
+    if (format != "json" && format != "csv") throw ApiError(400, "must be json or csv", "format");
+    std::string body = service_.studyFindings(std::string(seg[2]));
+    if (format == "json") return textResponse(200, "application/json", std::move(body));
+    return textResponse(200, "text/csv; charset=utf-8", nlohmann::json::parse(body)["csv"].get<std::string>());
+  }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "bands") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    return textResponse(200, "application/json", service_.studyBands(std::string(seg[2]), query));
+  }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "resume") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    auto [status, study] = service_.resumeStudy(std::string(seg[2]));
+    return textResponse(status, "application/json", std::move(study));
   }
   if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "cancel") {
     if (method != "POST") return methodNotAllowed(method, path, "POST");

@@ -375,7 +375,12 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     end.error = hasCheckpoint(id) ? "the server stopped before the run ended; it can be resumed"
                                   : "the server stopped before the run ended (no checkpoint: it cannot be resumed)";
   }
-  if (end.status == RunStatus::Cancelled) removeCheckpoint(id);  // cancelled means not wanted
+  // Cancelled means not wanted, unless the run is a study's: the study may be resumed
+  // (POST /api/studies/{name}/resume), from here. Deleting the run drops it.
+  if (end.status == RunStatus::Cancelled) {
+    const auto stored = repo_.findRun(id);
+    if (!stored || stored->study.empty()) removeCheckpoint(id);
+  }
   const auto state = run->state();
   end.stage = state.stage;
   end.finishedAt = unixNow();
@@ -395,6 +400,8 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
     forget(id);
     return;
   }
+  // Queued before the end, so whoever sees the run ended finds it stored.
+  repo_.setVoidRatio(id, summary.voidRatioAfterConsolidation);
   repo_.finishRun(id, end, [this, run, end] { published(run, end); });
 }
 
@@ -540,10 +547,17 @@ nlohmann::json RunService::list(const RunQuery& query) {
 nlohmann::json RunService::studies() {
   // Imported sweeps have runs only; a launched study is listed even once its runs are deleted.
   std::map<std::string, nlohmann::json> byName;
-  for (const StudyCounts& study : repo_.studies()) byName[study.study] = studyJson(study);
+  for (const StudyCounts& study : repo_.studies()) {
+    byName[study.study] = studyJson(study);
+    addTimeLeft(byName[study.study], underWay(byName[study.study]) ? repo_.studyPace(study.study) : StudyPace{},
+                manager_.maxConcurrent());
+  }
   for (const StudyRecord& launched : repo_.launchedStudies()) {
     auto& study = byName[launched.name];
-    if (study.is_null()) study = studyJson(StudyCounts{launched.name, {}});
+    if (study.is_null()) {
+      study = studyJson(StudyCounts{launched.name, {}});
+      addTimeLeft(study, StudyPace{}, manager_.maxConcurrent());
+    }
     addLaunch(study, launched, false);
   }
   nlohmann::json out = nlohmann::json::array();
@@ -556,6 +570,7 @@ nlohmann::json RunService::study(const std::string& name) {
   const auto launched = repo_.launchedStudies(name);
   if (counts.empty() && launched.empty()) throw ApiError(404, "no study '" + name + "'", "study");
   nlohmann::json study = studyJson(counts.empty() ? StudyCounts{name, {}} : counts.front());
+  addTimeLeft(study, underWay(study) ? repo_.studyPace(name) : StudyPace{}, manager_.maxConcurrent());
   if (!launched.empty()) addLaunch(study, launched.front(), true);
   return study;
 }

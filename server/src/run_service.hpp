@@ -4,11 +4,13 @@
 // merging the database with the live state, and attaches stream watchers. Refusals are thrown
 // as ApiError with the HTTP status they deserve.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -54,11 +56,33 @@ class RunService {
   /// queue has no room for all of it now, 503 past the particle limit; 409 for a name in use.
   /// Returns the new study's name.
   std::string launchStudy(const std::string& body);
+  /// POST /api/studies with {"paper": {"seeds": N, "quick": bool}} (study_paper.cpp): the
+  /// paper's six assemblies × N seeds, as `grainlab paper` runs them. Refused by field
+  /// (paper.seeds, paper.quick, an unknown key) as a sweep spec is.
+  std::string launchPaperStudy(const nlohmann::ordered_json& spec);
+  /// GET /api/studies/{name}/findings (study_findings.cpp): a paper study's findings, computed
+  /// once all its runs have ended by the code `grainlab paper` uses, and kept: {"findings":
+  /// [...], "csv": findings.csv's text}. 404 unknown, 409 not a paper study or runs left.
+  std::string studyFindings(const std::string& name);
   /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does,
   /// and its interrupted ones (their checkpoints dropped). 200 when every one of them ended
   /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
   /// Returns the status and the study's body (studyText).
   std::pair<int, std::string> cancelStudy(const std::string& name);
+  /// POST /api/studies/{name}/resume (study_resume.cpp): its cancelled and interrupted runs
+  /// queued again, each from its checkpoint where it has one (a study's cancelled run keeps
+  /// its checkpoint for this), else from the start. 202 with the study's body; 404 unknown,
+  /// 409 when no run is left to resume, 429 when the queue has no room for all of them.
+  std::pair<int, std::string> resumeStudy(const std::string& name);
+  /// DELETE /api/studies/{name} (study_delete.cpp): every run of it as remove() deletes one,
+  /// then the study's row. 204 once all is gone, 202 if a running run is still stopping (it
+  /// deletes itself when it has); 404 unknown.
+  int deleteStudy(const std::string& name);
+  /// GET /api/studies/{name}/bands (study_bands_service.cpp): its completed runs' ensemble
+  /// bands of `quantity` (default phi) against axial strain, grouped by the varied path
+  /// `group` (default the first that is not the seed; "" one group). 404 unknown study, 400
+  /// naming a bad parameter.
+  std::string studyBands(const std::string& name, const QueryParameters& query);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);
@@ -96,6 +120,21 @@ class RunService {
     Scene scene;
     std::optional<StagedSpecimen> specimen;
   };
+  /// One run of a study about to be launched: its scene (named NAME/id when stored), the
+  /// preset it came from, the values it was given and how a refusal names it.
+  struct StudyRun {
+    nlohmann::json scene;
+    std::string id;
+    std::string preset;
+    nlohmann::json parameters;
+    std::string description;
+  };
+  /// Admits every run as create() does, then stores the study and its runs in one go and
+  /// queues them (study_launch.cpp): whole or not at all. `fieldOf(field, k)` names a refusal
+  /// of run k; `roomField` a queue without room. Returns the name.
+  std::string storeStudy(const std::string& name, const nlohmann::ordered_json& spec, std::vector<StudyRun> runs,
+                         const std::string& roomField,
+                         const std::function<std::string(const std::string&, std::size_t)>& fieldOf);
   /// Every check POST /api/runs makes of a scene but the queue's room; throws ApiError.
   AdmittedRun admit(nlohmann::json sceneJson, std::string preset);
   /// A stored admitted run: its specimen kept, queued. Throws ApiError (503, 429) having

@@ -3,6 +3,7 @@
 // admitted as POST /api/runs admits one before anything is stored, and the study and its runs
 // are stored in one transaction: a study is launched whole or not at all.
 #include <cctype>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,7 @@ std::string RunService::launchStudy(const std::string& body) {
   const nlohmann::ordered_json spec = nlohmann::ordered_json::parse(body, nullptr, false);
   if (spec.is_discarded()) throw ApiError(400, "the body is not valid JSON", "(json)");
   if (!spec.is_object()) throw ApiError(400, "expected a sweep spec: {name, base, vary, mode}", "(json)");
+  if (spec.contains("paper")) return launchPaperStudy(spec);  // study_paper.cpp
   const std::string name = studyName(spec);
   if (spec.contains("prepare"))
     throw ApiError(400,
@@ -94,6 +96,22 @@ std::string RunService::launchStudy(const std::string& body) {
     throw ApiError(400, e.reason(), e.field());
   }
 
+  const std::string preset = spec["base"].contains("preset") ? spec["base"]["preset"].get<std::string>() : "";
+  std::vector<StudyRun> planned;
+  planned.reserve(runs.size());
+  for (studies::SweepRun& run : runs) {
+    nlohmann::json parameters = nlohmann::json::object();
+    for (const auto& [path, value] : run.parameters) parameters[path] = value;
+    planned.push_back({std::move(run.scene), run.id, preset, std::move(parameters), describe(run)});
+  }
+  return storeStudy(name, spec, std::move(planned), "vary", [&](const std::string& field, std::size_t k) {
+    return runField(field, k, sweep.axes);
+  });
+}
+
+std::string RunService::storeStudy(const std::string& name, const nlohmann::ordered_json& spec, std::vector<StudyRun> runs,
+                                   const std::string& roomField,
+                                   const std::function<std::string(const std::string&, std::size_t)>& fieldOf) {
   std::lock_guard lock(studyMutex_);
   if (!repo_.launchedStudies(name).empty() || !repo_.studies(name).empty())
     throw ApiError(409, "a study named '" + name + "' exists already", "name");
@@ -102,27 +120,24 @@ std::string RunService::launchStudy(const std::string& body) {
   if (static_cast<long>(runs.size()) > room)
     throw ApiError(429, "the run queue has room for " + std::to_string(room) + " runs, the study has " +
                             std::to_string(runs.size()) + "; try again when runs have finished",
-                   "vary");
+                   roomField);
 
-  const std::string preset = spec["base"].contains("preset") ? spec["base"]["preset"].get<std::string>() : "";
   std::vector<AdmittedRun> admitted;
   std::vector<RunRecord> records;
   nlohmann::json listed = nlohmann::json::array();
   admitted.reserve(runs.size());
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    nlohmann::json scene = runs[k].scene;
+    nlohmann::json scene = std::move(runs[k].scene);
     scene["name"] = name + "/" + runs[k].id;
     try {
-      admitted.push_back(admit(std::move(scene), preset));
+      admitted.push_back(admit(std::move(scene), runs[k].preset));
     } catch (const ApiError& e) {
-      throw ApiError(e.status(), "run " + std::to_string(k + 1) + " (" + describe(runs[k]) + "): " + e.what(),
-                     runField(e.field(), k, sweep.axes));
+      throw ApiError(e.status(), "run " + std::to_string(k + 1) + " (" + runs[k].description + "): " + e.what(),
+                     fieldOf(e.field(), k));
     }
     admitted.back().record.study = name;
     records.push_back(admitted.back().record);
-    nlohmann::json parameters = nlohmann::json::object();
-    for (const auto& [path, value] : runs[k].parameters) parameters[path] = value;
-    listed.push_back({{"name", admitted.back().record.name}, {"parameters", std::move(parameters)}});
+    listed.push_back({{"name", admitted.back().record.name}, {"parameters", std::move(runs[k].parameters)}});
   }
 
   StudyRecord launched;
@@ -177,8 +192,9 @@ std::pair<int, std::string> RunService::cancelStudy(const std::string& name) {
       }
     }
   }
-  // An interrupted run is the study's unfinished work too: cancelled with it, its checkpoint
-  // dropped, so that no later `--resume-interrupted` runs it on. What it stored is kept.
+  // An interrupted run is the study's unfinished work too: cancelled with it, so that no later
+  // `--resume-interrupted` runs it on. What it stored is kept, and its checkpoint, for
+  // POST /api/studies/{name}/resume (study_resume.cpp).
   RunQuery interrupted;
   interrupted.study = name;
   interrupted.statuses = {RunStatus::Interrupted};
@@ -196,7 +212,6 @@ std::pair<int, std::string> RunService::cancelStudy(const std::string& name) {
     end.peakPhiMobDeg = run.peakPhiMobDeg;
     end.warnings = run.warnings;
     repo_.finishRun(run.id, end, nullptr);
-    removeCheckpoint(run.id);
     ++ended;
   }
   if (ended + stopping == 0) throw ApiError(409, "study '" + name + "' has no queued, running or interrupted run", "study");

@@ -8,10 +8,20 @@
 
 namespace grainlab::server {
 
-/// {"name", "runs", "by_status": {"completed": 11, ...}, "status", "progress", "runs_url"}.
+/// {"id" (= name), "name", "runs", "by_status": {"completed": 11, ...}, "status", "progress", "runs_url"}.
 /// status: running or queued while any run is; else failed, interrupted or cancelled if
 /// any run ended so (in that order); else completed. progress: the share of runs ended.
 nlohmann::json studyJson(const StudyCounts& study);
+
+/// The study's time left: "seconds_left", the wall time its queued and running runs still
+/// need at the measured pace, and "seconds_left_basis" saying what it rests on. The work left
+/// is the runs' estimated seconds (the part of a running run not yet done); the pace is the
+/// wall time the study's completed runs took over their estimates (1 until one has
+/// completed: "estimate"; then "measured"); `slots` runs go at once (grainlab serve
+/// --max-concurrent). 0 with no run queued or running; null if a run left has no estimate.
+void addTimeLeft(nlohmann::json& study, const StudyPace& pace, int slots);
+/// Whether the study (studyJson) has a run queued or running: only then is its pace read.
+bool underWay(const nlohmann::json& study);
 
 /// What a study launched here adds (POST /api/studies): "source": "launched" (else
 /// "imported"), "created_at", "cancelled"; with `detail` its "run_parameters"

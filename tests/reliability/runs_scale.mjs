@@ -4,7 +4,8 @@
 // GET /api/runs?limit=50 one request at a time (median, target <= 20 ms) and with filters,
 // a deep page and the whole list for comparison; wrk with 50 connections on the page; the
 // server's memory; and the dashboard's runs view first draw in Chromium (median of 5 loads,
-// target <= 1 s). The copies carry no frames or histograms: the list never reads them.
+// target <= 1 s). Then one 500-run study (scale-7): its summary (target <= 200 ms), its
+// ensemble bands from the stored series, and its page's first draw in Chromium (<= 1 s). The copies carry no frames or histograms: the list never reads them.
 import { spawn, spawnSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import { join, resolve } from 'node:path';
@@ -65,7 +66,13 @@ function copyRuns(db, real) {
   return out.stdout.trim().split('|').map(Number);
 }
 
-async function firstDraws(base, loads = 5) {
+// From the start of navigation to `drawn` holding in the page, by the page's own clock: the
+// runs view's 50 rows, or a study's band table with its means.
+const RUNS_DRAWN = () => document.querySelectorAll('table.runs tbody tr').length === 50;
+const BANDS_DRAWN = () => [...document.querySelectorAll('table.study-bands td.band-mean')].some((td) => td.dataset.mean)
+  && document.querySelector('.study-chart canvas') !== null;
+
+async function firstDraws(base, hash = '#/runs', drawn = RUNS_DRAWN, loads = 5) {
   const require = createRequire(join(WEB, 'package.json'));
   const { chromium } = require('playwright-core');
   const browser = await chromium.launch({ executablePath: process.env.GRAINLAB_CHROMIUM ?? '/usr/bin/chromium',
@@ -74,11 +81,9 @@ async function firstDraws(base, loads = 5) {
   try {
     for (let k = 0; k < loads; k++) {
       const page = await browser.newPage({ viewport: { width: 1300, height: 1000 } });
-      await page.goto(`${base}/#/runs`);
-      // From the start of navigation to the 50 rows in the table, by the page's own clock.
-      const drawn = await page.waitForFunction(() => document.querySelectorAll('table.runs tbody tr').length === 50
-        && performance.now(), null, { timeout: 30000, polling: 'raf' });
-      times.push(await drawn.jsonValue());
+      await page.goto(`${base}/${hash}`);
+      const done = await page.waitForFunction(`(${drawn})() && performance.now()`, null, { timeout: 30000, polling: 'raf' });
+      times.push(await done.jsonValue());
       await page.close();
     }
   } finally {
@@ -157,6 +162,29 @@ try {
   figure(S, 'dashboard runs view, first draw of its 50 rows in Chromium: median of 5 loads', drawMedian,
          { unit: 'ms', target: '<= 1000 ms', ok: drawMedian <= 1000 });
   figure(S, 'the same: slowest load', Math.max(...draws), { unit: 'ms' });
+
+  // ---- a 500-run study: its summary, its bands, its page ----
+  const study = 'scale-7';
+  const summaryTimes = await timed(`${base}/api/studies/${study}`, 50);
+  const summary = await getJson(`${base}/api/studies/${study}`);
+  check(`${study} holds 500 runs`, summary.runs === 500, JSON.stringify(summary.by_status));
+  const summaryMedian = median(summaryTimes);
+  figure(S, `GET /api/studies/${study} (its summary, 500 runs): median (50 requests)`, summaryMedian,
+         { unit: 'ms', target: '<= 200 ms', ok: summaryMedian <= 200 });
+  const bandsUrl = `${base}/api/studies/${study}/bands?quantity=phi`;
+  const bandsBody = await getJson(bandsUrl);
+  check('its bands average every completed run', bandsBody.runs === summary.by_status.completed
+    && bandsBody.groups.length === 1 && bandsBody.groups[0].ids.length === bandsBody.runs, `${bandsBody.runs} runs`);
+  figure(S, `GET /api/studies/${study}/bands?quantity=phi (${bandsBody.runs} completed runs' series): answer size`,
+         JSON.stringify(bandsBody).length / 1024, { unit: 'KiB' });
+  const bandsMedian = median(await timed(bandsUrl, 10));
+  figure(S, 'the same: median (10 requests)', bandsMedian, { unit: 'ms' });
+  const studyDraws = await firstDraws(base, `#/studies/${study}`, BANDS_DRAWN);
+  const studyDrawMedian = median(studyDraws);
+  figure(S, `dashboard study view of ${study}, first draw of its bands in Chromium: median of 5 loads`, studyDrawMedian,
+         { unit: 'ms', target: '<= 1000 ms', ok: studyDrawMedian <= 1000 });
+  figure(S, 'the same: slowest load', Math.max(...studyDraws), { unit: 'ms' });
+  figure(S, 'server RSS after the study view', rssMiB(server.pid), { unit: 'MiB' });
 
   // ---- the whole list, as a client without limit still gets it ----
   const whole = await timed(`${base}/api/runs`, 3);

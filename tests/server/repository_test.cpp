@@ -23,6 +23,7 @@ std::string freshDb(const std::string& name) {
 // What a database from before studies looked like (schema 5): no study column, no list indexes,
 // no studies table.
 constexpr const char* kUndoStudies =
+    "ALTER TABLE runs DROP COLUMN void_ratio_after_consolidation; "  // schema 9
     "DROP TABLE studies; DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
     "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
     "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study;";

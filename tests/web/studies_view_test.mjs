@@ -3,7 +3,8 @@
 // refusal beside the row it names (with nothing stored); the list follows the study to its
 // end by polling; the study's page shows one band per friction, each of 2 runs, and its mean
 // of φ_mob at the last common strain is the mean of the runs' own series there, and of the
-// series `grainlab sweep` writes for the same spec. The CSV download holds the same numbers.
+// series `grainlab sweep` writes for the same spec; the page computes none of it (the server's
+// bands) and reads no run to draw it. The CSV download holds the same numbers.
 // No console errors but the refusal provoked on purpose.
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -54,6 +55,11 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('...4 done of 4', /4 done · 0 running · 0 failed · 0 queued of 4/.test(await row.textContent()), await row.textContent());
   await screenshot(page, 'studies-list');
 
+  // The study page draws the server's bands (GET /api/studies/NAME/bands): it reads no run.
+  const runReads = [];
+  page.on('request', (request) => {
+    if (/\/api\/runs\/\d+(\/series)?(\?|$)/.test(new URL(request.url()).pathname)) runReads.push(request.url());
+  });
   await row.getByRole('link', { name: NAME }).click();
   const bandRows = page.locator('table.study-bands tbody tr');
   await waitUntil(async () => (await bandRows.count()) === 2 && (await page.locator('.band-mean').first().textContent()) !== '–', 30);
@@ -105,6 +111,7 @@ await runBrowserTest([], async ({ server, browser }) => {
   } finally {
     rmSync(scratch, { recursive: true, force: true });
   }
+  check('the study page drew its bands without reading a run or its series', runReads.length === 0, runReads.join(' '));
   const ink = await canvasInk(page, '.study-chart canvas');
   check(`the ensemble chart is drawn (${(100 * ink).toFixed(1)} % of its pixels inked)`, ink > 0.01);
   check('the two frictions give different means', (await page.$$eval('.band-mean', (c) => new Set(c.map((x) => x.dataset.mean)).size)) === 2);
@@ -126,11 +133,23 @@ await runBrowserTest([], async ({ server, browser }) => {
   await page.getByRole('button', { name: 'Launch study' }).click();
   const cancelRow = page.locator('tr[data-study="to-cancel"]');
   await waitUntil(async () => (await cancelRow.count()) === 1 && /running/.test(await cancelRow.locator('.status').textContent()), 30);
+  const left = cancelRow.locator('.time-left');
+  check('a running study shows its time left in the list', (await left.count()) === 1
+    && /^(about|at least) \d+ (s|min \d+ s|h \d+ min) left$/.test(await left.textContent()),
+    (await left.count()) ? await left.textContent() : 'none');
   await cancelRow.getByRole('button', { name: 'Cancel' }).click();
   const cancelled = await waitUntil(async () => /cancelled/.test(await cancelRow.locator('.status').textContent()), 60);
   const after = await json('/api/studies/to-cancel');
   check('Cancel on the list cancels the study, shown there', Boolean(cancelled) && after.cancelled === true && after.status === 'cancelled',
     JSON.stringify(after.by_status));
   check('...its queued runs never ran', (after.by_status.cancelled ?? 0) >= 2, JSON.stringify(after.by_status));
+  // Resume from the list: the cancelled study's runs queued again.
+  await cancelRow.getByRole('button', { name: 'Resume' }).click();
+  const resumed = await waitUntil(async () => /running|queued/.test(await cancelRow.locator('.status').textContent()), 30);
+  const again = await json('/api/studies/to-cancel');
+  check('Resume on the list queues the cancelled study again', Boolean(resumed) && again.cancelled === false
+    && (again.by_status.running ?? 0) + (again.by_status.queued ?? 0) === 3, JSON.stringify(again.by_status));
+  await cancelRow.getByRole('button', { name: 'Cancel' }).click();
+  await waitUntil(async () => /cancelled/.test(await cancelRow.locator('.status').textContent()), 60);
   check('no console errors', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
 });

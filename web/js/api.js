@@ -67,6 +67,22 @@ export const api = {
   /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
   launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
   cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
+  /** Deletes the study with its runs and their files. */
+  deleteStudy: (name) => request('DELETE', `/api/studies/${encodeURIComponent(name)}`, { expect: 'text' }),
+  /** A paper study's findings ({findings: [{number, claim, verdict, checks: [...]}], csv}), once its runs have ended. */
+  studyFindings: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}/findings`),
+  /** A cancelled or interrupted study's runs queued again, from their checkpoints where they have one. */
+  resumeStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/resume`),
+  /**
+   * A study's ensemble bands, computed on the server from its completed runs' series:
+   * {quantity, title, group_by, paths, runs, grid, groups: [{value, ids, mean, low, high, n}]}.
+   * `group` '' puts every run in one group; undefined lets the server pick the first varied path.
+   */
+  studyBands: (name, quantity, group) => {
+    const query = new URLSearchParams({ quantity });
+    if (group !== undefined) query.set('group', group);
+    return request('GET', `/api/studies/${encodeURIComponent(name)}/bands?${query}`);
+  },
   run: (id) => request('GET', runPath(id)),
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,

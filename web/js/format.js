@@ -45,3 +45,20 @@ export function millimetres(value) {
 }
 
 export const TERMINAL_STATUSES = new Set(['completed', 'failed', 'cancelled', 'interrupted']);
+
+/**
+ * A study's time left as the server estimates it (seconds_left, seconds_left_basis): null
+ * when nothing is left to run or it cannot be told; else {text, title}.
+ */
+export function timeLeft(study) {
+  const seconds = study.seconds_left;
+  const basis = study.seconds_left_basis;
+  if (basis === 'done' || basis === undefined) return null;
+  if (seconds === null || seconds === undefined) return { text: 'time left unknown', title: 'a run left has no estimated wall time' };
+  if (basis === 'measured') {
+    const runs = study.pace?.runs_measured;
+    return { text: `about ${duration(seconds)} left`,
+      title: `the runs' estimated seconds at the pace the ${runs} finished run${runs === 1 ? '' : 's'} kept (wall time ${sig(study.pace?.wall_over_estimate)} × estimate)` };
+  }
+  return { text: `at least ${duration(seconds)} left`, title: "the runs' estimated seconds (no run has finished yet to measure the pace by)" };
+}

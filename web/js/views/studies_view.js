@@ -4,12 +4,15 @@
 // server's refusal beside the row it names; cancel. A study's name opens its page
 // (#/studies/NAME, study_view.js) and its run count the runs list filtered by it.
 import { api } from '../api.js';
+import { timeLeft } from '../format.js';
 import { h, replaceChildren } from '../dom.js';
 import { parseValues, runCount, sweepSpec } from '../study_spec.js';
 
 const POLL_MS = 2000;
 const DEFAULT_PRESET = 'circular-quick';
 const UNDER_WAY = new Set(['running', 'queued']);
+// A study with a run cancelled or interrupted (and none under way) can be resumed.
+const RESUMABLE = new Set(['cancelled', 'interrupted']);
 
 export function studiesView(root) {
   const tableBody = h('tbody');
@@ -130,6 +133,41 @@ export function studiesView(root) {
     h('div', { class: 'form-actions' }, launchButton, count),
     formError);
 
+  // ---- the paper: its six assemblies x N seeds, as `grainlab paper` runs them ----
+  const paperName = h('input', { id: 'paper-name', type: 'text', autocomplete: 'off', placeholder: 'e.g. paper-8 (empty: paper-N-seeds)' });
+  const paperSeeds = h('input', { id: 'paper-seeds', type: 'number', min: '1', step: '1', value: '1' });
+  const paperQuick = h('input', { id: 'paper-quick', type: 'checkbox', checked: true });
+  const paperError = h('div', { class: 'form-error', hidden: true });
+  const paperButton = h('button', { type: 'submit', class: 'primary' }, 'Launch the paper');
+  async function launchPaper() {
+    paperError.hidden = true;
+    const seeds = Number(paperSeeds.value);
+    const body = { paper: { seeds: Number.isInteger(seeds) ? seeds : paperSeeds.value, quick: paperQuick.checked } };
+    if (paperName.value.trim()) body.name = paperName.value.trim();
+    paperButton.disabled = true;
+    try {
+      const study = await api.launchStudy(body);
+      paperName.value = '';
+      await refresh();
+      paperError.textContent = '';
+      count.textContent = `launched ${study.name}: ${study.runs} runs`;
+    } catch (error) {
+      paperError.textContent = error.field ? `${error.field}: ${error.message}` : error.message;
+      paperError.hidden = false;
+    } finally {
+      paperButton.disabled = false;
+    }
+  }
+  const paperForm = h('form', { class: 'panel paper-form', novalidate: true, onsubmit: (event) => { event.preventDefault(); launchPaper(); } },
+    h('h3', {}, 'Launch the paper'),
+    h('div', { class: 'hint' }, 'The paper\'s six biaxial tests (circular, random, bedded at 0, 30, 60, 90°), each with seeds 1 to N, as grainlab paper runs them; once they have run, the study\'s page shows the findings.'),
+    h('div', { class: 'form-grid' },
+      h('label', { for: 'paper-name' }, 'Name'), h('div', { class: 'field-input' }, paperName),
+      h('label', { for: 'paper-seeds' }, 'Seeds'), h('div', { class: 'field-input' }, paperSeeds),
+      h('label', { for: 'paper-quick' }, 'Quick presets'), h('div', { class: 'field-input' }, paperQuick)),
+    h('div', { class: 'form-actions' }, paperButton),
+    paperError);
+
   // ---- the list ----
   const rowsByName = new Map();
   function studyRow(study) {
@@ -146,6 +184,15 @@ export function studiesView(root) {
         listError.hidden = false;
       }
     } }, 'Cancel');
+    const resumeButton = h('button', { type: 'button', onclick: async () => {
+      try {
+        await api.resumeStudy(study.name);
+        refresh();
+      } catch (error) {
+        listError.textContent = `Resuming ${study.name} failed: ${error.message}`;
+        listError.hidden = false;
+      }
+    } }, 'Resume');
     function update(s) {
       replaceChildren(cells.name, h('a', { href: `#/studies/${encodeURIComponent(s.name)}` }, s.name));
       cells.source.textContent = s.source ?? 'imported';
@@ -153,12 +200,14 @@ export function studiesView(root) {
       const pct = `${Math.round(s.progress * 100)}%`;
       replaceChildren(cells.progress, h('span', { class: 'progress' },
         h('span', { class: 'bar' }, h('span', { style: { width: pct } })), h('span', { class: 'label' }, pct)));
+      const left = UNDER_WAY.has(s.status) ? timeLeft(s) : null;
+      if (left) cells.progress.append(' ', h('span', { class: 'time-left', title: left.title, dataset: { seconds: String(s.seconds_left) } }, left.text));
       const by = s.by_status;
       replaceChildren(cells.counts,
         h('a', { href: `#/runs?study=${encodeURIComponent(s.name)}`, title: 'its runs' },
           `${by.completed ?? 0} done · ${by.running ?? 0} running · ${(by.failed ?? 0) + (by.interrupted ?? 0)} failed · ${by.queued ?? 0} queued`,
           by.cancelled ? ` · ${by.cancelled} cancelled` : '', ` of ${s.runs}`));
-      replaceChildren(cells.actions, UNDER_WAY.has(s.status) ? cancelButton : null);
+      replaceChildren(cells.actions, UNDER_WAY.has(s.status) ? cancelButton : RESUMABLE.has(s.status) ? resumeButton : null);
     }
     return { element, update };
   }
@@ -206,7 +255,7 @@ export function studiesView(root) {
         h('thead', {}, h('tr', {}, ['Study', 'Source', 'Status', 'Progress', 'Runs', ''].map((t) => h('th', {}, t)))),
         tableBody),
       empty, listError),
-    form);
+    form, paperForm);
 
   (async () => {
     try {

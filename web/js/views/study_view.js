@@ -1,38 +1,26 @@
 // One study (#/studies/NAME): its progress and runs with the values each was given, and, once
 // runs have finished, one quantity's ensemble mean with its 95 % band against axial strain
 // (shearing stage), one line per value of the varied path chosen, with the table behind it
-// as CSV. The statistics are ensemble_stats.js's, the charts the Compare view's.
+// as CSV. The bands are the server's (GET /api/studies/NAME/bands, computed from the stored
+// series): the page never loads a run's series, whatever the study's size. The charts are the
+// Compare view's.
 import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
 import { ChartPanel, joinTables } from '../chart_panel.js';
-import { COMPARE_CHARTS, X_AXES, chartDomain } from '../chart_specs.js';
-import { SeriesTable, shearingStages } from '../series_table.js';
-import { ensembleBand } from '../ensemble_stats.js';
-import { sig } from '../format.js';
+import { COMPARE_CHARTS, X_AXES } from '../chart_specs.js';
+import { sig, timeLeft } from '../format.js';
 
 const POLL_MS = 2000;
 const UNDER_WAY = new Set(['running', 'queued']);
+// A study with a run cancelled or interrupted (and none under way) can be resumed.
+const RESUMABLE = new Set(['cancelled', 'interrupted']);
 const BAND_COLOURS = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000'];
+// The runs table shows this many; the runs list (filtered by study) pages through the rest.
+const RUNS_SHOWN = 200;
 
-/**
- * The groups' bands: runs [{id, parameters, table, scene}] grouped by the value of `path`
- * (every run in one group when path is ''), each {value, ids, band}.
- */
-export function studyBands(runs, path, spec) {
-  const groups = new Map();
-  for (const run of runs) {
-    const value = path ? JSON.stringify(run.parameters?.[path] ?? null) : 'all runs';
-    if (!groups.has(value)) groups.set(value, []);
-    groups.get(value).push(run);
-  }
-  return [...groups].map(([value, members]) => {
-    const tables = members.map((run) => {
-      const domain = chartDomain(run.table, X_AXES.strain, shearingStages(run.scene));
-      return [domain.x, spec.values(run.table, domain.rows)];
-    }).filter(([x]) => x.length);
-    const band = ensembleBand(tables, { isAxial: Boolean(spec.gaps), quorum: Boolean(spec.gaps) });
-    return { value, ids: members.map((run) => run.id), band };
-  });
+/** The server's bands as groups {value, ids, band: {x, mean, low, high, n}} (null for a strain not reached). */
+export function bandGroups(bands) {
+  return bands.groups.map((g) => ({ value: g.value, ids: g.ids, band: { x: bands.grid, mean: g.mean, low: g.low, high: g.high, n: g.n } }));
 }
 
 /** The last strain every run of the group reaches, and the mean there: [x, mean, low, high, n] or null. */
@@ -64,13 +52,22 @@ export function studyView(root, name) {
   const summary = h('div', { class: 'study-summary' });
   const message = h('div', { class: 'form-error', hidden: true });
   const runsBody = h('tbody');
-  const pathSelect = h('select', { id: 'study-group', 'aria-label': 'Group by', onchange: () => drawBands() });
-  const quantitySelect = h('select', { id: 'study-quantity', 'aria-label': 'Quantity', onchange: () => drawBands() },
+  const pathSelect = h('select', { id: 'study-group', 'aria-label': 'Group by', onchange: () => choose() });
+  const quantitySelect = h('select', { id: 'study-quantity', 'aria-label': 'Quantity', onchange: () => choose() },
     COMPARE_CHARTS.map((spec) => h('option', { value: spec.key }, spec.title)));
   const chartBox = h('div', { class: 'study-chart' });
   const bandTable = h('tbody');
   const download = h('a', { class: 'button', download: `${name}.csv`, href: '#', hidden: true }, 'Download CSV');
   const ensembleHint = h('div', { class: 'hint' });
+  // A paper study's findings, once its runs have ended (GET /api/studies/NAME/findings).
+  const findingsBody = h('tbody');
+  const findingsHint = h('div', { class: 'hint' });
+  const findingsDownload = h('a', { class: 'button', download: `${name}-findings.csv`, href: '#', hidden: true }, 'Download findings.csv');
+  const findingsPanel = h('div', { class: 'panel study-findings', hidden: true },
+    h('h3', {}, 'Findings'), findingsHint, findingsDownload,
+    h('table', { class: 'runs findings' },
+      h('thead', {}, h('tr', {}, ['#', 'Claim', 'Verdict', 'Subject', 'Estimate', '95 % interval', 'Check'].map((t) => h('th', {}, t)))),
+      findingsBody));
   replaceChildren(root,
     h('div', { class: 'view-title' }, title, h('a', { href: '#/studies' }, 'All studies'),
       h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'Its runs in the runs list')),
@@ -84,6 +81,7 @@ export function studyView(root, name) {
       h('table', { class: 'runs study-bands' },
         h('thead', {}, h('tr', {}, ['Value', 'Runs', 'Axial strain (%)', 'Mean', '95 % band'].map((t) => h('th', {}, t)))),
         bandTable)),
+    findingsPanel,
     h('div', { class: 'panel' }, h('h3', {}, 'Runs'),
       h('table', { class: 'runs study-runs' }, h('thead', {}, h('tr', {}, ['#', 'Run', 'Values', 'Status'].map((t) => h('th', {}, t)))), runsBody)));
   quantitySelect.value = 'phi';
@@ -92,30 +90,72 @@ export function studyView(root, name) {
   let timer = null;
   let panel = null;
   let study = null;
-  const loaded = new Map();  // id -> {id, parameters, table, scene}: completed runs, read once
+  let bands = null;       // the server's answer for the quantity and grouping shown
+  let bandsKey = null;    // what it was asked for: quantity, group and the completed runs then
+  let asked = 0;          // the latest request's number: an older answer arriving late is dropped
 
   async function refresh() {
     clearTimeout(timer);
     try {
       study = await api.study(name);
-      const page = await api.runsPage({ study: name, limit: 1000, order: 'asc' });
+      const page = await api.runsPage({ study: name, limit: RUNS_SHOWN, order: 'asc' });
       if (destroyed) return;
       message.hidden = true;
       showSummary(page);
-      const parameters = new Map((study.run_parameters ?? []).map((r) => [r.id, r.parameters]));
-      const completed = page.runs.filter((run) => run.status === 'completed' && !loaded.has(run.id));
-      const fresh = await Promise.all(completed.map(async (run) => {
-        const [full, series] = await Promise.all([api.run(run.id), api.series(run.id)]);
-        return { id: run.id, parameters: parameters.get(run.id) ?? {}, table: SeriesTable.fromRest(series), scene: full.scene };
-      }));
-      if (destroyed) return;
-      for (const run of fresh) loaded.set(run.id, run);
-      if (fresh.length || !panel) drawBands();
+      await loadBands();
+      if (study.spec?.paper && !findings && !UNDER_WAY.has(study.status)) await loadFindings();
     } catch (error) {
       message.textContent = `The study cannot be loaded: ${error.message}`;
       message.hidden = false;
     }
     if (!destroyed && (!study || UNDER_WAY.has(study.status))) timer = setTimeout(refresh, POLL_MS);
+  }
+
+  let findings = null;
+  async function loadFindings() {
+    findingsPanel.hidden = false;
+    try {
+      findings = await api.studyFindings(name);
+    } catch (error) {
+      findingsHint.textContent = `No findings: ${error.message}`;
+      return;
+    }
+    if (destroyed) return;
+    const estimate = (v) => (v === null ? '–' : sig(v, 4));
+    findingsHint.textContent = `The paper's claims judged on ${findings.runs} runs (${findings.seeds} seed${findings.seeds === 1 ? '' : 's'} of each assembly${findings.quick ? ', quick presets' : ''}) by grainlab paper's code.`;
+    replaceChildren(findingsBody, findings.findings.flatMap((f) => f.checks.map((c, k) => h('tr', { dataset: { finding: String(f.number) } },
+      h('td', {}, k === 0 ? String(f.number) : ''),
+      h('td', { title: f.criterion }, k === 0 ? f.claim : ''),
+      h('td', { class: 'finding-verdict' }, k === 0 ? f.verdict : ''),
+      h('td', {}, c.subject),
+      h('td', { class: 'finding-value', title: c.quantity, dataset: { value: String(c.value) } }, estimate(c.value)),
+      h('td', {}, c.ci_low === null ? '–' : `${estimate(c.ci_low)} … ${estimate(c.ci_high)}`),
+      h('td', { title: c.measured }, c.verdict)))));
+    URL.revokeObjectURL(findingsDownload.href);
+    findingsDownload.href = URL.createObjectURL(new Blob([findings.csv], { type: 'text/csv' }));
+    findingsDownload.hidden = false;
+  }
+
+  // Asks again only when the choice or the number of completed runs changed.
+  async function loadBands() {
+    if (!study) return;
+    const key = JSON.stringify([quantitySelect.value, pathSelect.value, study.by_status.completed ?? 0]);
+    if (key === bandsKey) return;
+    const number = ++asked;
+    const answer = await api.studyBands(name, quantitySelect.value, pathSelect.value);
+    if (destroyed || number !== asked) return;
+    bands = answer;
+    bandsKey = key;
+    drawBands();
+  }
+
+  async function choose() {
+    try {
+      await loadBands();
+    } catch (error) {
+      message.textContent = `The bands cannot be loaded: ${error.message}`;
+      message.hidden = false;
+    }
   }
 
   function showSummary(page) {
@@ -128,21 +168,42 @@ export function studyView(root, name) {
         message.textContent = `Cancelling failed: ${error.message}`;
         message.hidden = false;
       }
-    } }, 'Cancel study') : null;
+    } }, 'Cancel study') : RESUMABLE.has(study.status) ? h('button', { type: 'button', onclick: async () => {
+      try {
+        await api.resumeStudy(name);
+        refresh();
+      } catch (error) {
+        message.textContent = `Resuming failed: ${error.message}`;
+        message.hidden = false;
+      }
+    } }, 'Resume study') : null;
     const pct = `${Math.round(study.progress * 100)}%`;
+    const left = UNDER_WAY.has(study.status) ? timeLeft(study) : null;
     replaceChildren(summary,
       h('span', { class: `status ${study.status}` }, study.status), ' ',
       h('span', { class: 'progress' }, h('span', { class: 'bar' }, h('span', { style: { width: pct } })), h('span', { class: 'label' }, pct)), ' ',
       h('span', { class: 'study-counts' }, `${by.completed ?? 0} done · ${by.running ?? 0} running · ${(by.failed ?? 0) + (by.interrupted ?? 0)} failed · ${by.queued ?? 0} queued of ${study.runs}`),
-      ' ', cancel,
+      ' ', left ? h('span', { class: 'time-left', title: left.title, dataset: { seconds: String(study.seconds_left) } }, left.text) : null,
+      ' ', cancel, ' ', h('button', { type: 'button', class: 'danger', onclick: async () => {
+        if (!window.confirm(`Delete the study ${name} with its ${study.runs} runs and everything they stored?`)) return;
+        try {
+          await api.deleteStudy(name);
+          window.location.hash = '#/studies';
+        } catch (error) {
+          message.textContent = `Deleting failed: ${error.message}`;
+          message.hidden = false;
+        }
+      } }, 'Delete study'),
       study.spec ? h('details', {}, h('summary', {}, 'Spec'), h('pre', {}, JSON.stringify(study.spec, null, 2))) : null);
     const parameters = new Map((study.run_parameters ?? []).map((r) => [r.id, r.parameters]));
     replaceChildren(runsBody, page.runs.map((run) => h('tr', { dataset: { runId: String(run.id) } },
       h('td', {}, String(run.id)),
       h('td', {}, h('a', { href: `#/run/${run.id}` }, run.name)),
       h('td', {}, Object.entries(parameters.get(run.id) ?? {}).map(([p, v]) => `${p} = ${JSON.stringify(v)}`).join(', ')),
-      h('td', {}, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status)))));
-    const paths = Object.keys(study.spec?.vary ?? {});
+      h('td', {}, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status)))),
+    page.total > page.runs.length ? h('tr', { class: 'more' }, h('td', { colspan: 4 },
+      `The first ${page.runs.length} of ${page.total}: `, h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'all of them in the runs list'))) : null);
+    const paths = study.spec?.paper ? ['preset', 'seed'] : Object.keys(study.spec?.vary ?? {});
     if (pathSelect.options.length !== paths.length + 1) {
       replaceChildren(pathSelect, h('option', { value: '' }, '(all runs together)'), paths.map((p) => h('option', { value: p }, p)));
       // The first varied path that is not the seed: seeds are what an ensemble averages over.
@@ -151,33 +212,32 @@ export function studyView(root, name) {
   }
 
   function drawBands() {
-    const spec = COMPARE_CHARTS.find((s) => s.key === quantitySelect.value);
-    const runs = [...loaded.values()].sort((a, b) => a.id - b.id);
+    const spec = COMPARE_CHARTS.find((s) => s.key === bands.quantity) ?? { key: bands.quantity, title: bands.title };
     panel?.destroy();
     panel = null;
-    if (!runs.length) {
+    if (!bands.runs) {
       ensembleHint.textContent = 'No run of this study has completed yet.';
       replaceChildren(bandTable);
       download.hidden = true;
       return;
     }
-    const path = pathSelect.value;
-    const groups = studyBands(runs, path, spec);
-    ensembleHint.textContent = `${runs.length} completed run${runs.length === 1 ? '' : 's'}: the mean of each group and its 95 % t-interval at the first run's strains.`;
+    const path = bands.group_by;
+    const groups = bandGroups(bands);
+    ensembleHint.textContent = `${bands.runs} completed run${bands.runs === 1 ? '' : 's'}: the mean of each group and its 95 % ${bands.interval === 't' ? 'Student-t' : 'circular'} interval, on ${bands.grid.length} strains from the first reached to the last.`;
     const series = [];
-    const bands = [];
+    const fills = [];
     const tables = [];
     groups.forEach((g, k) => {
       const colour = BAND_COLOURS[k % BAND_COLOURS.length];
       const label = path ? `${path} = ${g.value}` : 'all runs';
-      bands.push({ series: [series.length, series.length + 1], fill: `${colour}2e` });
+      fills.push({ series: [series.length, series.length + 1], fill: `${colour}2e` });
       series.push({ label: `${label} 95 % high`, stroke: colour, width: 0.5 },
         { label: `${label} 95 % low`, stroke: colour, width: 0.5 },
         { label: `${label}: mean of ${g.ids.length}`, stroke: colour, width: 2 });
       tables.push([g.band.x, g.band.high], [g.band.x, g.band.low], [g.band.x, g.band.mean]);
     });
     panel = new ChartPanel(chartBox, {
-      key: `study-${spec.key}`, title: spec.title, xLabel: X_AXES.strain.label, series, bands,
+      key: `study-${spec.key}`, title: spec.title, xLabel: X_AXES.strain.label, series, bands: fills,
       axes: [{ label: spec.title }], spanGaps: false, emptyText: 'No completed run has reached its shearing stage.',
     });
     const joined = tables.some(([x]) => x.length) ? joinTables(tables) : [[], ...tables.map(() => [])];
