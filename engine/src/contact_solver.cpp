@@ -11,6 +11,7 @@
 #include "contact_law.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "rolling_resistance.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -24,17 +25,31 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 // The law at a touching pair whose relative motion is m, with unit normal n and tangent t:
 // the force on j from i. Records the pair's history and last forces. Both contact forms
 // below end here.
+// `couple` receives the law's rolling couple on j (−couple on i; 0 without rolling resistance).
 template <class Law>
-inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt) {
+inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt,
+                     double& couple) {
   p.fn = law.normal.force(m, p.dampN);
-  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history);
+  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history.tangential);
+  couple = law.rolling.couple(p.fn, m, dt, p.history.rolling);
   p.overlap = m.overlap;
   return p.fn * n + p.ft * t;
 }
 
+// Cundall-Strack friction with rolling resistance (rolling_resistance.hpp), with or without
+// its damper.
+template <bool kDamped>
+using RollingLaw = ContactLaw<LinearSpringDashpot, CundallStrack, RollingResistance<kDamped>>;
+template <bool kDamped>
+RollingLaw<kDamped> rollingLaw(const Material& m) {
+  return {{m.normalStiffness},
+          {m.tangentialStiffness, m.friction},
+          {m.rollingStiffnessRatio, m.tangentialStiffness, m.rollingFriction, m.rollingDamping}};
+}
+
 // A pair that does not touch keeps no history and reports no force.
 void clearContact(PairState& p) {
-  p.history = 0;
+  p.history = {};
   p.fn = p.ft = p.overlap = 0;
 }
 
@@ -67,7 +82,7 @@ bool ContactSolver::movedOutOfSkin(int begin, int end) const {
 }
 
 void ContactSolver::clearTangentialHistory() {
-  for (PairState& p : neighbors_.pairs()) p.history = 0;
+  for (PairState& p : neighbors_.pairs()) p.history.tangential = 0;
 }
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
@@ -118,7 +133,8 @@ inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, 
     rj = g.point - x[j];
     dv += v[j] + cross(w[j], rj);
   }
-  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt);
+  double couple;  // none: rolling resistance is for discs (scenes with polygons refuse it)
+  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt, couple);
   ti = cross(ri, F);
   tj = cross(rj, F);
 }
@@ -142,9 +158,36 @@ inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, cons
     dv += v[j];
     spin += w[j] * c.armJ;
   }
-  F = lawForce(p, ContactMotion{c.overlap, dv.dot(n), dv.dot(t) - spin}, n, t, law, dt);
-  ti = c.armI * p.ft;
-  tj = -c.armJ * p.ft;
+  ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
+  using Rolling = decltype(law.rolling);
+  if constexpr (Rolling::kKeepsHistory) rollingMotion<Rolling::kNeedsInertia>(p, m);
+  double couple;
+  F = lawForce(p, m, n, t, law, dt, couple);
+  // The rolling couple on j, and its opposite on i (the loop subtracts ti from i's torque).
+  ti = c.armI * p.ft + couple;
+  tj = -c.armJ * p.ft + couple;
+}
+
+// What rolling resistance reads beside the disc contact's motion: the relative spin, the
+// effective radius and, for its damper, the pair's inertia for relative rolling (a wall's or a
+// fixed particle's term drops out).
+template <bool kInertia>
+inline void ContactSolver::rollingMotion(const PairState& p, ContactMotion& m) const {
+  const int i = p.i, j = p.j;
+  const double* w = particles_.spin.data();
+  const double* radius = particles_.boundingRadius.data();
+  const double ri = radius[i];
+  m.spin = (j >= 0 ? w[j] : 0.0) - w[i];
+  m.radius = j >= 0 ? ri * radius[j] / (ri + radius[j]) : ri;
+  if constexpr (kInertia) {
+    const double* mass = particles_.mass.data();
+    const double* inertia = particles_.inertia.data();
+    const Motion* motion = particles_.motion.data();
+    double inverse = 0;
+    if (motion[i] == Motion::Dynamic) inverse += 1 / (inertia[i] + mass[i] * ri * ri);
+    if (j >= 0 && motion[j] == Motion::Dynamic) inverse += 1 / (inertia[j] + mass[j] * radius[j] * radius[j]);
+    m.inertia = 1 / inverse;
+  }
 }
 
 // Calls force(k, g) for each touching pair k in [begin, end), in pair order, and apart(k) for
@@ -333,9 +376,13 @@ void ContactSolver::computeForces(double dt, bool moved) {
   }
   auto t1 = Clock::now();
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
-  // polygon code, a frictionless one keeps no tangential history.
+  // polygon code, a frictionless one keeps no tangential history (nor rolling resistance: a
+  // frictionless stage is frictionless throughout), and only discs roll with resistance.
   const LinearSpringDashpot normal{material_.normalStiffness};
-  if (material_.friction == 0) {
+  if (material_.rollingFriction > 0 && material_.friction > 0 && !polygons) {
+    material_.rollingDamping > 0 ? pairForces<RollingLaw<true>, true>(rollingLaw<true>(material_), dt)
+                                 : pairForces<RollingLaw<false>, true>(rollingLaw<false>(material_), dt);
+  } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
     polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   } else {
@@ -396,9 +443,16 @@ double ContactSolver::elasticEnergy() const {
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
+  const RollingResistance<false> rolling{material_.rollingStiffnessRatio, material_.tangentialStiffness,
+                                         material_.rollingFriction, 0};
+  const std::vector<double>& radius = particles_.boundingRadius;
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
-    e += normal.energy(p.overlap) + tangential.energy(p.history);
+    e += normal.energy(p.overlap) + tangential.energy(p.history.tangential);
+    if (p.history.rolling != 0) {
+      const double ri = radius[p.i];
+      e += rolling.energy(p.j >= 0 ? ri * radius[p.j] / (ri + radius[p.j]) : ri, p.history.rolling);
+    }
   }
   return e;
 }

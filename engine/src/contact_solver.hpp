@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact_geometry.hpp"
+#include "contact_law.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
@@ -62,6 +63,8 @@ class ContactSolver {
   template <class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
+  template <bool kInertia>
+  void rollingMotion(const PairState& pair, ContactMotion& m) const;
   template <class Law>
   void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
