@@ -25,7 +25,13 @@ std::vector<Scene> benchPiles() {
   far.position = Vec2(10.0, 10.0);
   far.motion = Motion::Fixed;
   general.particles.push_back(far);
-  return {pileScene(50, 50, false), general, pileScene(50, 50, true)};
+  // The disc pile with rolling resistance, as the circular-rolling preset's material has it:
+  // what the rolling couple and its history cost per step.
+  Scene rolling = pileScene(50, 50, false);
+  rolling.name = "disc-pile-rolling";
+  rolling.material.rollingFriction = 0.1;
+  rolling.material.rollingDamping = 0.3;
+  return {pileScene(50, 50, false), general, pileScene(50, 50, true), rolling};
 }
 
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
