@@ -28,11 +28,11 @@ int benchCommand(const std::vector<std::string>& args) {
     std::cerr << "bench: " << scene.name << " settling, then " << repeats << " x " << steps << " steps\n";
     results.push_back(bench::measurePileSpeed(scene, steps, repeats, threads, WorldSettings::Engine::Dem, &std::cerr));
   }
-  std::cout << std::left << std::setw(16) << "scene" << std::setw(11) << "particles" << std::setw(14)
+  std::cout << std::left << std::setw(18) << "scene" << std::setw(11) << "particles" << std::setw(14)
             << "coordination" << "median particle-steps/s"
             << "   (min .. max)\n";
   for (const bench::PileSpeed& r : results) {
-    std::cout << std::setw(16) << r.name << std::setw(11) << r.particles << std::setw(14) << std::setprecision(3)
+    std::cout << std::setw(18) << r.name << std::setw(11) << r.particles << std::setw(14) << std::setprecision(3)
               << r.coordination << std::setprecision(4) << r.medianRate() / 1e6
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";

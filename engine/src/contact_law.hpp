@@ -17,9 +17,7 @@ struct ContactMotion {
   double overlap;           ///< m, > 0
   double vn;                ///< m/s
   double vt;                ///< m/s
-  double spin = 0;          ///< rad/s
-  double radius = 0;        ///< effective radius R* = R_i R_j / (R_i + R_j) (R_i at a wall), m; 0 if not discs
-  double inertia = 0;       ///< I_r, the pair's inertia for relative rolling, kg·m² (rolling_resistance.hpp)
+  double spin = 0;          ///< rad/s (set where a law resists rolling)
 };
 
 /// Linear spring-dashpot: f_n = k_n δ − c_n v_n. As in LAMMPS's default, the dashpot may
@@ -61,9 +59,6 @@ struct Frictionless {
 /// No rolling resistance: no couple and no history to keep.
 struct NoRolling {
   static constexpr bool kKeepsHistory = false;
-  static constexpr bool kNeedsInertia = false;
-  double couple(double, const ContactMotion&, double, double&) const { return 0; }
-  double energy(double, double) const { return 0; }
 };
 
 /// A law's sub-models: normal force, tangential force, and the couple resisting relative

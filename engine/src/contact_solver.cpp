@@ -25,26 +25,18 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 // The law at a touching pair whose relative motion is m, with unit normal n and tangent t:
 // the force on j from i. Records the pair's history and last forces. Both contact forms
 // below end here.
-// `couple` receives the law's rolling couple on j (−couple on i; 0 without rolling resistance).
 template <class Law>
-inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt,
-                     double& couple) {
+inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt) {
   p.fn = law.normal.force(m, p.dampN);
   p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history.tangential);
-  couple = law.rolling.couple(p.fn, m, dt, p.history.rolling);
   p.overlap = m.overlap;
   return p.fn * n + p.ft * t;
 }
 
-// Cundall-Strack friction with rolling resistance (rolling_resistance.hpp), with or without
-// its damper.
-template <bool kDamped>
-using RollingLaw = ContactLaw<LinearSpringDashpot, CundallStrack, RollingResistance<kDamped>>;
-template <bool kDamped>
-RollingLaw<kDamped> rollingLaw(const Material& m) {
-  return {{m.normalStiffness},
-          {m.tangentialStiffness, m.friction},
-          {m.rollingStiffnessRatio, m.tangentialStiffness, m.rollingFriction, m.rollingDamping}};
+// Cundall-Strack friction with rolling resistance (rolling_resistance.hpp).
+using RollingLaw = ContactLaw<LinearSpringDashpot, CundallStrack, RollingResistance>;
+RollingResistance rollingModel(const Material& m) {
+  return {m.rollingStiffnessRatio, m.tangentialStiffness, m.rollingFriction, m.rollingDamping};
 }
 
 // A pair that does not touch keeps no history and reports no force.
@@ -133,8 +125,7 @@ inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, 
     rj = g.point - x[j];
     dv += v[j] + cross(w[j], rj);
   }
-  double couple;  // none: rolling resistance is for discs (scenes with polygons refuse it)
-  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt, couple);
+  F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt);
   ti = cross(ri, F);
   tj = cross(rj, F);
 }
@@ -159,34 +150,16 @@ inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, cons
     spin += w[j] * c.armJ;
   }
   ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
-  using Rolling = decltype(law.rolling);
-  if constexpr (Rolling::kKeepsHistory) rollingMotion<Rolling::kNeedsInertia>(p, m);
-  double couple;
-  F = lawForce(p, m, n, t, law, dt, couple);
-  // The rolling couple on j, and its opposite on i (the loop subtracts ti from i's torque).
-  ti = c.armI * p.ft + couple;
-  tj = -c.armJ * p.ft + couple;
-}
-
-// What rolling resistance reads beside the disc contact's motion: the relative spin, the
-// effective radius and, for its damper, the pair's inertia for relative rolling (a wall's or a
-// fixed particle's term drops out).
-template <bool kInertia>
-inline void ContactSolver::rollingMotion(const PairState& p, ContactMotion& m) const {
-  const int i = p.i, j = p.j;
-  const double* w = particles_.spin.data();
-  const double* radius = particles_.boundingRadius.data();
-  const double ri = radius[i];
-  m.spin = (j >= 0 ? w[j] : 0.0) - w[i];
-  m.radius = j >= 0 ? ri * radius[j] / (ri + radius[j]) : ri;
-  if constexpr (kInertia) {
-    const double* mass = particles_.mass.data();
-    const double* inertia = particles_.inertia.data();
-    const Motion* motion = particles_.motion.data();
-    double inverse = 0;
-    if (motion[i] == Motion::Dynamic) inverse += 1 / (inertia[i] + mass[i] * ri * ri);
-    if (j >= 0 && motion[j] == Motion::Dynamic) inverse += 1 / (inertia[j] + mass[j] * radius[j] * radius[j]);
-    m.inertia = 1 / inverse;
+  F = lawForce(p, m, n, t, law, dt);
+  ti = c.armI * p.ft;
+  tj = -c.armJ * p.ft;
+  if constexpr (decltype(law.rolling)::kKeepsHistory) {
+    // The rolling couple on j, and its opposite on i (the loop subtracts ti from i's torque).
+    m.spin = (j >= 0 ? w[j] : 0.0) - w[i];
+    const RollingResistance::Pair& constants = rollingPairs_[static_cast<size_t>(&p - neighbors_.pairs().data())];
+    const double couple = law.rolling.couple(p.fn, m, constants, dt, p.history.rolling);
+    ti += couple;
+    tj += couple;
   }
 }
 
@@ -354,6 +327,29 @@ void ContactSolver::assignDamping() {
   }
 }
 
+// Each pair's rolling constants (rolling_resistance.hpp), from its particles: the effective
+// radius, and the inertia for relative rolling about the contact (a wall's or a fixed
+// particle's term drops out). Like the damping, they follow the pair list.
+void ContactSolver::assignRollingPairs() {
+  const RollingResistance model = rollingModel(material_);
+  const std::vector<double>& radius = particles_.boundingRadius;
+  const std::vector<double>& mass = particles_.mass;
+  const std::vector<double>& inertia = particles_.inertia;
+  const std::vector<Motion>& motion = particles_.motion;
+  auto inverseInertia = [&](int k) {
+    return motion[k] == Motion::Dynamic ? 1 / (inertia[k] + mass[k] * radius[k] * radius[k]) : 0.0;
+  };
+  const std::vector<PairState>& pairs = neighbors_.pairs();
+  rollingPairs_.resize(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
+    const double ri = radius[p.i];
+    const double effective = p.j >= 0 ? ri * radius[p.j] / (ri + radius[p.j]) : ri;
+    const double inverse = inverseInertia(p.i) + (p.j >= 0 ? inverseInertia(p.j) : 0.0);
+    rollingPairs_[k] = model.pair(effective, inverse > 0 ? 1 / inverse : 0.0);
+  }
+}
+
 void ContactSolver::carryPolygonCache() {
   const std::vector<int>& from = neighbors_.carriedFrom();
   std::vector<CachedContact> carried(from.size());
@@ -370,6 +366,7 @@ void ContactSolver::computeForces(double dt, bool moved) {
   const bool polygons = !particles_.polygons.empty();
   if (rebuilt) {
     assignDamping();
+    if (material_.rollingFriction > 0) assignRollingPairs();
     if (polygons) carryPolygonCache();
     ++profile_.rebuilds;
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
@@ -380,8 +377,8 @@ void ContactSolver::computeForces(double dt, bool moved) {
   // frictionless stage is frictionless throughout), and only discs roll with resistance.
   const LinearSpringDashpot normal{material_.normalStiffness};
   if (material_.rollingFriction > 0 && material_.friction > 0 && !polygons) {
-    material_.rollingDamping > 0 ? pairForces<RollingLaw<true>, true>(rollingLaw<true>(material_), dt)
-                                 : pairForces<RollingLaw<false>, true>(rollingLaw<false>(material_), dt);
+    const RollingLaw law{normal, {material_.tangentialStiffness, material_.friction}, rollingModel(material_)};
+    pairForces<RollingLaw, true>(law, dt);
   } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
     polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
@@ -443,16 +440,12 @@ double ContactSolver::elasticEnergy() const {
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
-  const RollingResistance<false> rolling{material_.rollingStiffnessRatio, material_.tangentialStiffness,
-                                         material_.rollingFriction, 0};
-  const std::vector<double>& radius = particles_.boundingRadius;
-  for (const PairState& p : neighbors_.pairs()) {
+  const std::vector<PairState>& pairs = neighbors_.pairs();
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
     if (p.overlap <= 0) continue;
     e += normal.energy(p.overlap) + tangential.energy(p.history.tangential);
-    if (p.history.rolling != 0) {
-      const double ri = radius[p.i];
-      e += rolling.energy(p.j >= 0 ? ri * radius[p.j] / (ri + radius[p.j]) : ri, p.history.rolling);
-    }
+    if (p.history.rolling != 0 && k < rollingPairs_.size()) e += RollingResistance::energy(rollingPairs_[k], p.history.rolling);
   }
   return e;
 }
@@ -495,6 +488,7 @@ void ContactSolver::persist(StateArchive& a) {
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
   }
 }
 

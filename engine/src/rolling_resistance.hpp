@@ -12,39 +12,49 @@
 // about the contact (a wall's or a fixed particle's term drops out). While the spring sits at
 // the cap (full mobilisation) the damper is off, as in Ai's model with f = 0: the couple is then
 // exactly ±μ_r R* f_n, the plastic rolling couple.
+#include <algorithm>
 #include <cmath>
 
 #include "contact_law.hpp"
 
 namespace grainlab {
 
-template <bool kDamped>
 struct RollingResistance {
   double stiffnessRatio;       ///< β: k_r = β k_t R*²
   double tangentialStiffness;  ///< k_t, N/m
   double friction;             ///< μ_r (dimensionless: the cap is μ_r R* f_n)
   double damping;              ///< η_r, a ratio of the critical damping 2√(I_r k_r)
   static constexpr bool kKeepsHistory = true;
-  static constexpr bool kNeedsInertia = kDamped;
 
-  double stiffness(double radius) const { return stiffnessRatio * tangentialStiffness * radius * radius; }
+  /// What a pair's couple needs of its particles, fixed while the pair lasts: the solver keeps
+  /// one per pair (the square root and divisions stay out of the force loop).
+  struct Pair {
+    double stiffness;       ///< k_r, N·m/rad
+    double compliance;      ///< 1/k_r
+    double capPerForce;     ///< μ_r R*, m
+    double damping;         ///< c_r, N·m·s/rad
+  };
+  /// The constants of a pair with effective radius R* (m) and rolling inertia I_r (kg·m²).
+  Pair pair(double radius, double inertia) const {
+    const double kr = stiffnessRatio * tangentialStiffness * radius * radius;
+    return {kr, 1 / kr, friction * radius, 2 * damping * std::sqrt(inertia * kr)};
+  }
 
-  /// Returns the couple on j (on i it is the opposite) and updates the relative rotation
-  /// `history` (θ_r, rad).
-  double couple(double fn, const ContactMotion& c, double dt, double& history) const {
-    const double kr = stiffness(c.radius);
+  /// Returns the couple on j (on i it is the opposite) for the relative spin c.spin, and
+  /// updates the relative rotation `history` (θ_r, rad).
+  /// Written without branches: whether a contact rolls plastically changes from step to step
+  /// in a packing, which a branch would mispredict.
+  double couple(double fn, const ContactMotion& c, const Pair& pair, double dt, double& history) const {
     history += c.spin * dt;
-    const double spring = -kr * history;
-    const double cap = fn > 0 ? friction * c.radius * fn : 0.0;
-    if (std::abs(spring) >= cap) {
-      history = std::copysign(cap, history) / kr;  // the spring sits at the cap: plastic rolling
-      return -kr * history;
-    }
-    if constexpr (kDamped) return spring - 2 * damping * std::sqrt(c.inertia * kr) * c.spin;
-    return spring;
+    const double spring = -pair.stiffness * history;
+    const double cap = std::max(pair.capPerForce * fn, 0.0);  // none while the dashpot pulls
+    const double held = std::clamp(spring, -cap, cap);
+    const bool plastic = std::abs(spring) >= cap;  // the spring sits at the cap: plastic rolling
+    history = plastic ? -held * pair.compliance : history;
+    return plastic ? held : spring - pair.damping * c.spin;
   }
   /// The rolling spring's elastic energy, J (per metre).
-  double energy(double radius, double history) const { return 0.5 * stiffness(radius) * history * history; }
+  static double energy(const Pair& pair, double history) { return 0.5 * pair.stiffness * history * history; }
 };
 
 }  // namespace grainlab
