@@ -45,7 +45,11 @@ int benchCommand(const std::vector<std::string>& args) {
     std::cout << "discs-only path / general path: " << results[0].medianRate() / results[1].medianRate() << "\n";
     std::cout << "polygons / discs: " << results[2].medianRate() / results[0].medianRate() << "\n";
     std::cout << "discs / discs with rolling resistance (cost per step): "
-              << results[0].medianRate() / results[3].medianRate() << "\n";
+              << results[0].medianRate() / results[3].medianRate();
+    if (threads == 1) {  // the same by CPU time, which other programs on the machine move far less
+      std::cout << " (by CPU time: " << results[0].medianCpuRate() / results[3].medianCpuRate() << ")";
+    }
+    std::cout << "\n";
     // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
     // step it is slower, per simulated second the timestep ratio counts too.
     for (size_t k : {size_t{0}, size_t{2}}) {

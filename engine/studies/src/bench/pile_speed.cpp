@@ -4,15 +4,21 @@
 #include <chrono>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/thread_cpu_clock.hpp"
 
 namespace grainlab::bench {
 
-double PileSpeed::medianRate() const {
-  std::vector<double> v = rates;
+namespace {
+double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
+  if (n == 0) return 0;
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+}  // namespace
+
+double PileSpeed::medianRate() const { return median(rates); }
+double PileSpeed::medianCpuRate() const { return median(cpuRates); }
 
 std::vector<Scene> benchPiles() {
   // The disc pile once more with one far-away polygon: it takes the general path instead of
@@ -53,9 +59,12 @@ PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threa
   if (progress) *progress << "bench: " << scene.name << " settled, timing\n";
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     for (int k = 0; k < steps; ++k) world.step();
+    const double cpu = threadCpuSeconds() - cpu0;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.rates.push_back(world.size() * static_cast<double>(steps) / s);
+    if (threads == 1) r.cpuRates.push_back(world.size() * static_cast<double>(steps) / cpu);
   }
   world.checkHealth();
   return r;
