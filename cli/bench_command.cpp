@@ -28,22 +28,28 @@ int benchCommand(const std::vector<std::string>& args) {
     std::cerr << "bench: " << scene.name << " settling, then " << repeats << " x " << steps << " steps\n";
     results.push_back(bench::measurePileSpeed(scene, steps, repeats, threads, WorldSettings::Engine::Dem, &std::cerr));
   }
-  std::cout << std::left << std::setw(16) << "scene" << std::setw(11) << "particles" << std::setw(14)
+  std::cout << std::left << std::setw(18) << "scene" << std::setw(11) << "particles" << std::setw(14)
             << "coordination" << "median particle-steps/s"
             << "   (min .. max)\n";
   for (const bench::PileSpeed& r : results) {
-    std::cout << std::setw(16) << r.name << std::setw(11) << r.particles << std::setw(14) << std::setprecision(3)
+    std::cout << std::setw(18) << r.name << std::setw(11) << r.particles << std::setw(14) << std::setprecision(3)
               << r.coordination << std::setprecision(4) << r.medianRate() / 1e6
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }
   if (results.empty()) {
-    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile)\n";
+    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile, disc-pile-rolling)\n";
     return 2;
   }
   if (results.size() == scenes.size()) {
     std::cout << "discs-only path / general path: " << results[0].medianRate() / results[1].medianRate() << "\n";
     std::cout << "polygons / discs: " << results[2].medianRate() / results[0].medianRate() << "\n";
+    std::cout << "discs / discs with rolling resistance (cost per step): "
+              << results[0].medianRate() / results[3].medianRate();
+    if (threads == 1) {  // the same by CPU time, which other programs on the machine move far less
+      std::cout << " (by CPU time: " << results[0].medianCpuRate() / results[3].medianCpuRate() << ")";
+    }
+    std::cout << "\n";
     // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
     // step it is slower, per simulated second the timestep ratio counts too.
     for (size_t k : {size_t{0}, size_t{2}}) {

@@ -88,9 +88,10 @@ void checkFits(const SpecimenIdentity& saved, const SpecimenIdentity& scene, con
   }
   const Material &a = saved.material, &b = scene.material;
   if (a.density != b.density || a.normalStiffness != b.normalStiffness || a.tangentialStiffness != b.tangentialStiffness ||
-      a.restitution != b.restitution || a.localDamping != b.localDamping) {
-    refuse("the specimen was prepared with another material (density, stiffnesses, restitution or damping) than this "
-           "scene's");
+      a.restitution != b.restitution || a.localDamping != b.localDamping || a.rollingFriction != b.rollingFriction ||
+      a.rollingStiffnessRatio != b.rollingStiffnessRatio || a.rollingDamping != b.rollingDamping) {
+    refuse("the specimen was prepared with another material (density, stiffnesses, restitution, damping or rolling "
+           "resistance) than this scene's");
   }
   const std::string stageField = field == "start_from.checkpoint" ? field : "start_from.stage";
   const std::size_t k = static_cast<std::size_t>(saved.stageIndex);

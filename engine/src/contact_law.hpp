@@ -2,8 +2,9 @@
 // Contact laws, composed from a normal model and a tangential model (as LAMMPS GRANULAR
 // composes its sub-models). Each model is a small value type with inline force functions;
 // the ContactSolver instantiates its force loop once per combination, so a law costs no
-// virtual call per contact. To add a law (Hertz-Mindlin, rolling resistance): write its model
-// here with the same members, and add one case to ContactSolver::computeForces' dispatch.
+// virtual call per contact. To add a law (Hertz-Mindlin, a twisting model): write its model
+// in its own header with the same members (a slot in ContactHistory if it keeps history), and
+// add one case to ContactSolver::computeForces' dispatch.
 #include <cmath>
 
 #include "grainlab/math.hpp"
@@ -11,11 +12,12 @@
 namespace grainlab {
 
 /// Relative motion at a contact point, seen from body i: vn = (v_j − v_i)·n (negative when
-/// approaching), vt = (v_j − v_i)·t.
+/// approaching), vt = (v_j − v_i)·t, spin = ω_j − ω_i (a wall's is 0).
 struct ContactMotion {
-  double overlap;  ///< m, > 0
-  double vn;       ///< m/s
-  double vt;       ///< m/s
+  double overlap;           ///< m, > 0
+  double vn;                ///< m/s
+  double vt;                ///< m/s
+  double spin = 0;          ///< rad/s (set where a law resists rolling)
 };
 
 /// Linear spring-dashpot: f_n = k_n δ − c_n v_n. As in LAMMPS's default, the dashpot may
@@ -54,10 +56,19 @@ struct Frictionless {
   double force(double, const ContactMotion&, double, double, double&) const { return 0; }
 };
 
-template <class Normal, class Tangential>
+/// No rolling resistance: no couple and no history to keep.
+struct NoRolling {
+  static constexpr bool kKeepsHistory = false;
+};
+
+/// A law's sub-models: normal force, tangential force, and the couple resisting relative
+/// rotation (rolling_resistance.hpp). Each sub-model keeps its own slot of the pair's
+/// ContactHistory.
+template <class Normal, class Tangential, class Rolling = NoRolling>
 struct ContactLaw {
   Normal normal;
   Tangential tangential;
+  Rolling rolling{};
 };
 
 /// Damping ratio ζ of a linear spring-dashpot whose binary collision has restitution e:

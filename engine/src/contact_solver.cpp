@@ -11,6 +11,7 @@
 #include "contact_law.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "rolling_resistance.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -27,14 +28,20 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 template <class Law>
 inline Vec2 lawForce(PairState& p, const ContactMotion& m, const Vec2& n, const Vec2& t, const Law& law, double dt) {
   p.fn = law.normal.force(m, p.dampN);
-  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history);
+  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history.tangential);
   p.overlap = m.overlap;
   return p.fn * n + p.ft * t;
 }
 
+// Cundall-Strack friction with rolling resistance (rolling_resistance.hpp).
+using RollingLaw = ContactLaw<LinearSpringDashpot, CundallStrack, RollingResistance>;
+RollingResistance rollingModel(const Material& m) {
+  return {m.rollingStiffnessRatio, m.tangentialStiffness, m.rollingFriction, m.rollingDamping};
+}
+
 // A pair that does not touch keeps no history and reports no force.
 void clearContact(PairState& p) {
-  p.history = 0;
+  p.history = {};
   p.fn = p.ft = p.overlap = 0;
 }
 
@@ -67,7 +74,7 @@ bool ContactSolver::movedOutOfSkin(int begin, int end) const {
 }
 
 void ContactSolver::clearTangentialHistory() {
-  for (PairState& p : neighbors_.pairs()) p.history = 0;
+  for (PairState& p : neighbors_.pairs()) p.history.tangential = 0;
 }
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
@@ -142,9 +149,18 @@ inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, cons
     dv += v[j];
     spin += w[j] * c.armJ;
   }
-  F = lawForce(p, ContactMotion{c.overlap, dv.dot(n), dv.dot(t) - spin}, n, t, law, dt);
+  ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
+  F = lawForce(p, m, n, t, law, dt);
   ti = c.armI * p.ft;
   tj = -c.armJ * p.ft;
+  if constexpr (decltype(law.rolling)::kKeepsHistory) {
+    // The rolling couple on j, and its opposite on i (the loop subtracts ti from i's torque).
+    m.spin = (j >= 0 ? w[j] : 0.0) - w[i];
+    const RollingResistance::Pair& constants = rollingPairs_[static_cast<size_t>(&p - neighbors_.pairs().data())];
+    const double couple = law.rolling.couple(p.fn, m, constants, dt, p.history.rolling);
+    ti += couple;
+    tj += couple;
+  }
 }
 
 // Calls force(k, g) for each touching pair k in [begin, end), in pair order, and apart(k) for
@@ -311,6 +327,29 @@ void ContactSolver::assignDamping() {
   }
 }
 
+// Each pair's rolling constants (rolling_resistance.hpp), from its particles: the effective
+// radius, and the inertia for relative rolling about the contact (a wall's or a fixed
+// particle's term drops out). Like the damping, they follow the pair list.
+void ContactSolver::assignRollingPairs() {
+  const RollingResistance model = rollingModel(material_);
+  const std::vector<double>& radius = particles_.boundingRadius;
+  const std::vector<double>& mass = particles_.mass;
+  const std::vector<double>& inertia = particles_.inertia;
+  const std::vector<Motion>& motion = particles_.motion;
+  auto inverseInertia = [&](int k) {
+    return motion[k] == Motion::Dynamic ? 1 / (inertia[k] + mass[k] * radius[k] * radius[k]) : 0.0;
+  };
+  const std::vector<PairState>& pairs = neighbors_.pairs();
+  rollingPairs_.resize(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
+    const double ri = radius[p.i];
+    const double effective = p.j >= 0 ? ri * radius[p.j] / (ri + radius[p.j]) : ri;
+    const double inverse = inverseInertia(p.i) + (p.j >= 0 ? inverseInertia(p.j) : 0.0);
+    rollingPairs_[k] = model.pair(effective, inverse > 0 ? 1 / inverse : 0.0);
+  }
+}
+
 void ContactSolver::carryPolygonCache() {
   const std::vector<int>& from = neighbors_.carriedFrom();
   std::vector<CachedContact> carried(from.size());
@@ -327,15 +366,20 @@ void ContactSolver::computeForces(double dt, bool moved) {
   const bool polygons = !particles_.polygons.empty();
   if (rebuilt) {
     assignDamping();
+    if (material_.rollingFriction > 0) assignRollingPairs();
     if (polygons) carryPolygonCache();
     ++profile_.rebuilds;
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
   }
   auto t1 = Clock::now();
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
-  // polygon code, a frictionless one keeps no tangential history.
+  // polygon code, a frictionless one keeps no tangential history (nor rolling resistance: a
+  // frictionless stage is frictionless throughout), and only discs roll with resistance.
   const LinearSpringDashpot normal{material_.normalStiffness};
-  if (material_.friction == 0) {
+  if (material_.rollingFriction > 0 && material_.friction > 0 && !polygons) {
+    const RollingLaw law{normal, {material_.tangentialStiffness, material_.friction}, rollingModel(material_)};
+    pairForces<RollingLaw, true>(law, dt);
+  } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
     polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   } else {
@@ -396,9 +440,12 @@ double ContactSolver::elasticEnergy() const {
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
-  for (const PairState& p : neighbors_.pairs()) {
+  const std::vector<PairState>& pairs = neighbors_.pairs();
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const PairState& p = pairs[k];
     if (p.overlap <= 0) continue;
-    e += normal.energy(p.overlap) + tangential.energy(p.history);
+    e += normal.energy(p.overlap) + tangential.energy(p.history.tangential);
+    if (p.history.rolling != 0 && k < rollingPairs_.size()) e += RollingResistance::energy(rollingPairs_[k], p.history.rolling);
   }
   return e;
 }
@@ -441,6 +488,7 @@ void ContactSolver::persist(StateArchive& a) {
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
   }
 }
 

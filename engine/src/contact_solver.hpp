@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "contact_geometry.hpp"
+#include "contact_law.hpp"
+#include "rolling_resistance.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
@@ -53,6 +55,7 @@ class ContactSolver {
   ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
   void assignDamping();
   void assignDeferredSlots();
+  void assignRollingPairs();
   void carryPolygonCache();
   void applyLocalDamping(int k);
   template <class Law, bool kDiscsOnly>
@@ -76,6 +79,7 @@ class ContactSolver {
   NeighborList neighbors_;
   std::unique_ptr<PolygonCollider> polygonCollider_;
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
+  std::vector<RollingResistance::Pair> rollingPairs_;  // per pair, with rolling resistance
   // Parallel force loop: a pair's share of force on a particle is added at once by the thread
   // that owns the particle (the one computing its first pair); a share computed by another
   // thread waits in a slot and is added after the loop, in pair order.

@@ -107,7 +107,7 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     for (int j : candidates_) pairs_.push_back({i, j});
   }
 
-  // Carry contact history over: both lists are sorted by (i, j).
+  // Carry each persisting pair's contact state over: both lists are sorted by (i, j).
   auto less = [](const PairState& a, const PairState& b) { return a.i < b.i || (a.i == b.i && a.j < b.j); };
   size_t o = 0;
   carriedFrom_.assign(pairs_.size(), -1);
@@ -115,10 +115,9 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     PairState& p = pairs_[k];
     while (o < previous_.size() && less(previous_[o], p)) ++o;
     if (o < previous_.size() && previous_[o].i == p.i && previous_[o].j == p.j) {
-      p.history = previous_[o].history;
-      p.fn = previous_[o].fn;
-      p.ft = previous_[o].ft;
-      p.overlap = previous_[o].overlap;
+      // The whole pair, so that state added to PairState or to its history block later
+      // carries over without a change here (its damping is the solver's to reassign).
+      p = previous_[o];
       carriedFrom_[k] = static_cast<int>(o);
     }
   }

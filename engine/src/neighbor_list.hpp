@@ -13,13 +13,22 @@
 
 namespace grainlab {
 
-/// One candidate pair and the state its contact keeps (hot data: 56 bytes).
+/// What a touching contact's law remembers from step to step, one slot per sub-model that
+/// keeps history (contact_law.hpp). It moves as one block: the neighbour list carries it over
+/// a rebuild, a pair that parts clears it, and checkpoints copy it whole, so a slot added
+/// here needs no other change to survive any of them. All zero when not touching.
+struct ContactHistory {
+  double tangential = 0;  ///< Cundall-Strack spring elongation, m
+  double rolling = 0;     ///< rolling spring's relative rotation, rad (rolling_resistance.hpp)
+};
+
+/// One candidate pair and the state its contact keeps (hot data: 64 bytes, a cache line).
 struct PairState {
   int i = 0;
   int j = 0;                 ///< particle index, or -1 - wall index
   double dampN = 0;          ///< normal viscous coefficient, N·s/m
   double dampT = 0;          ///< tangential viscous coefficient, N·s/m
-  double history = 0;        ///< tangential spring elongation, m (0 when not touching)
+  ContactHistory history;    ///< the law's memory (0 when not touching)
   double fn = 0, ft = 0;     ///< forces of the last step, N (0 when not touching)
   double overlap = 0;        ///< m, of the last step (<= 0 when not touching)
 };

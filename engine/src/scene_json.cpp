@@ -24,6 +24,9 @@ Material parseMaterial(const nlohmann::json& j) {
   m.friction = r.number("friction", m.friction, 0, kInf);
   m.restitution = r.number("restitution", m.restitution, 0, 1, true);
   m.localDamping = r.number("local_damping", m.localDamping, 0, 1, false, true);
+  m.rollingFriction = r.number("rolling_friction", m.rollingFriction, 0, kInf);
+  m.rollingStiffnessRatio = r.number("rolling_stiffness_ratio", m.rollingStiffnessRatio, 0, kInf, true);
+  m.rollingDamping = r.number("rolling_damping", m.rollingDamping, 0, 1);
   r.finish();
   return m;
 }
@@ -249,6 +252,22 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   return o;
 }
 
+// Rolling resistance is a disc model in the DEM engine (rolling_resistance.hpp): a polygon
+// resists rolling by its shape already, and Box2D has no such couple here.
+void refuseRollingWhereNotModelled(const Scene& scene) {
+  if (scene.material.rollingFriction == 0) return;
+  bool polygons = scene.assembly && scene.assembly->shape != SpecimenRecipe::Shape::Disc;
+  for (const ParticleSpec& p : scene.particles) polygons = polygons || p.shape != ShapeKind::Disc;
+  if (polygons) {
+    throw SceneError("material.rolling_friction", "rolling resistance is for discs; this scene has polygons, which "
+                                                  "resist rolling by their shape (set it to 0)");
+  }
+  if (scene.solver.engine == SolverSpec::Engine::Box2d) {
+    throw SceneError("material.rolling_friction", "the box2d engine has no rolling resistance (use the dem engine, or "
+                                                  "set it to 0)");
+  }
+}
+
 }  // namespace
 
 Scene parseScene(const nlohmann::json& json) {
@@ -310,6 +329,7 @@ Scene parseScene(const nlohmann::json& json) {
   scene.solver = parseSolver(r.raw("solver"));
   scene.output = parseOutput(r.raw("output"));
   scene.startFrom = parseStartFrom(r.raw("start_from"));
+  refuseRollingWhereNotModelled(scene);
   r.finish();
   return scene;
 }

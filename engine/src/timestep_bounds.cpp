@@ -10,9 +10,21 @@ namespace grainlab {
 
 double stiffestSpring(const ParticleStore& particles, const Material& material, int k, bool tangential) {
   const double r = particles.boundingRadius[k];
-  const double rotational = 1.0 + particles.mass[k] * r * r / particles.inertia[k];
+  const double g = particles.mass[k] * r * r / particles.inertia[k];
+  const double rotational = 1.0 + g;
   const double normal = material.normalStiffness * (particles.shape[k] == ShapeKind::Disc ? 1.0 : rotational);
-  return tangential ? std::max(normal, material.tangentialStiffness * rotational) : normal;
+  if (!tangential) return normal;
+  if (material.rollingFriction > 0 && particles.shape[k] == ShapeKind::Disc) {
+    // The rolling spring k_r = β k_t R*² (R* <= R) acts on the rotation the tangential spring
+    // already couples to the translation. With u = Rφ, the pair of springs is the stiffness
+    // k_t [[1, 1], [1, 1 + β]] on (x, u) with masses (m, m/g): the highest eigenvalue of
+    // M⁻¹K is k_t/m · (T + √(T² − 4D))/2, T = 1 + g(1 + β), D = gβ, which is k_t (1 + g)/m
+    // when β = 0 (rolling_resistance.hpp).
+    const double b = material.rollingStiffnessRatio;
+    const double t = 1 + g * (1 + b), d = g * b;
+    return std::max(normal, material.tangentialStiffness * 0.5 * (t + std::sqrt(t * t - 4 * d)));
+  }
+  return std::max(normal, material.tangentialStiffness * rotational);
 }
 
 double criticalTimestep(const ParticleStore& particles, const Material& material) {

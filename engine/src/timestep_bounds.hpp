@@ -12,7 +12,8 @@ namespace grainlab {
 /// Particle k's stiffest contact spring as seen through its rotational inertia, N/m: a force
 /// at the bounding radius R, off the centre's line, moves the contact point as if the mass
 /// were m / (1 + m R²/I). A disc's normal force passes through its centre; a polygon's need
-/// not. `tangential`: whether the tangential spring counts.
+/// not. `tangential`: whether the tangential spring counts (and with it a disc's rolling
+/// spring, when the material has rolling resistance).
 double stiffestSpring(const ParticleStore& particles, const Material& material, int k, bool tangential);
 
 /// 2·√(m*/k) for the stiffest, lightest contact (World::criticalTimestep).

@@ -61,8 +61,13 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
 // their first stage has few contacts.) Adding the waiting shares in reverse, or letting the
 // thread of a particle's last pair add its shares at once, each fail this test (checked).
 TEST(Determinism, ThreadCountDoesNotChangeABitInAShuffledPile) {
-  for (bool polygons : {false, true}) {
+  for (const char* kind : {"discs", "polygons", "discs with rolling resistance"}) {
+    const bool polygons = std::string(kind) == "polygons";
     Scene scene = pileScene(16, 16, polygons);
+    if (std::string(kind) == "discs with rolling resistance") {  // the couple goes the same way
+      scene.material.rollingFriction = 0.1;
+      scene.material.rollingDamping = 0.3;
+    }
     std::mt19937_64 rng(7);
     std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
     // Pressed 8% closer than the lattice, neighbours overlap from the start and push apart
@@ -77,7 +82,7 @@ TEST(Determinism, ThreadCountDoesNotChangeABitInAShuffledPile) {
       Recorder parallel;
       scene.solver.threads = threads;
       ASSERT_EQ(runScene(scene, parallel).status, RunStatus::Completed);
-      const std::string what = std::string(polygons ? "polygons, " : "discs, ") + std::to_string(threads) + " threads";
+      const std::string what = std::string(kind) + ", " + std::to_string(threads) + " threads";
       EXPECT_EQ(serial.hash, parallel.hash) << what;
       EXPECT_EQ(serial.rows, parallel.rows) << what;
     }

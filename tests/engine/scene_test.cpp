@@ -69,6 +69,27 @@ TEST(Scene, ErrorsNameTheField) {
   j = oneDisc();
   j["typo"] = 1;
   EXPECT_EQ(fieldOf(j), "typo");
+  // Rolling resistance: not negative, a positive stiffness, and for discs in the dem engine.
+  for (const char* key : {"rolling_friction", "rolling_stiffness_ratio", "rolling_damping"}) {
+    j = oneDisc();
+    j["material"] = {{key, -0.1}};
+    EXPECT_EQ(fieldOf(j), std::string("material.") + key);
+  }
+  j = oneDisc();
+  j["material"] = {{"rolling_stiffness_ratio", 0}};
+  EXPECT_EQ(fieldOf(j), "material.rolling_stiffness_ratio");
+  j = oneDisc();
+  j["material"] = {{"rolling_friction", 0.1}};
+  EXPECT_NO_THROW(parseScene(j));
+  j["particles"].push_back({{"shape", "polygon"}, {"vertices", {{0, 0}, {1, 0}, {0, 1}}}, {"position", {5, 5}}});
+  EXPECT_EQ(fieldOf(j), "material.rolling_friction");
+  j = presetScene("elongated-random-quick");
+  j["material"]["rolling_friction"] = 0.1;
+  EXPECT_EQ(fieldOf(j), "material.rolling_friction");
+  j = oneDisc();
+  j["material"] = {{"rolling_friction", 0.1}};
+  j["solver"] = {{"engine", "box2d"}};
+  EXPECT_EQ(fieldOf(j), "material.rolling_friction");
   EXPECT_EQ(fieldOf(json::object()), "particles");  // an empty scene is refused
   EXPECT_EQ(fieldOf(json::array()), "(scene)");
 }

@@ -27,6 +27,7 @@ edit() {  # PYTHON_STATEMENT_ON_s > FILE
 refused "membrane ring" --preset circular-quick
 refused "polygon particles" <(edit 's["particles"][0] = {"shape": "polygon", "vertices": [[-1e-3, -1e-3], [1e-3, -1e-3], [0, 1e-3]], "position": s["particles"][0]["position"]}')
 refused "local_damping" --preset demo-pile
+refused "rolling_friction" <(edit 's["material"]["rolling_friction"] = 0.1')
 refused "not axis-aligned" <(edit 's["walls"][0]["normal"] = [0.6, 0.8]')
 refused "fixed or kinematic" <(edit 's["particles"][0]["motion"] = "fixed"')
 refused "needs a periodic cell" "$work/packing.json" --deform 0,-1

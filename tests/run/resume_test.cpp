@@ -162,6 +162,9 @@ INSTANTIATE_TEST_SUITE_P(
                       variant("DemPolygons", "elongated-random-quick", "dem", 1, 0.03),
                       variant("DemPolygonsTwoThreads", "elongated-random-quick", "dem", 2, 0.01),
                       variant("DemDiscsWithParaViewFrames", "circular-quick", "dem", 1, 0.1, true),
+                      // The rolling springs' relative rotations are history the checkpoint keeps.
+                      variant("DemDiscsRolling", "circular-rolling-quick", "dem", 1, 0.1),
+                      variant("DemDiscsRollingTwoThreads", "circular-rolling-quick", "dem", 2, 0.05),
                       variant("Box2dDiscs", "circular-quick", "box2d", 1, 0.1),
                       variant("Box2dPolygons", "elongated-random-quick", "box2d", 1, 0.03)),
     variantName);

@@ -145,6 +145,10 @@ export const SCENE_FIELDS = [
   { key: 'friction', label: 'Friction coefficient μ', kind: 'number', paths: fixed('material.friction') },
   { key: 'normal_stiffness', label: 'Normal stiffness kₙ', unit: 'N/m', kind: 'number', paths: fixed('material.normal_stiffness') },
   { key: 'tangential_stiffness', label: 'Tangential stiffness kₜ', unit: 'N/m', kind: 'number', paths: fixed('material.tangential_stiffness') },
+  {
+    key: 'rolling_friction', label: 'Rolling friction μᵣ', kind: 'number', paths: fixed('material.rolling_friction'),
+    visible: (scene) => !elongated(scene), hint: 'discs only: a couple up to μᵣ R* fₙ resists rolling; empty: none (docs/shape-fidelity.md)',
+  },
   { section: 'Loading' },
   {
     key: 'confining', label: 'Confining stress', unit: 'kPa', kind: 'number', factor: 1e3,

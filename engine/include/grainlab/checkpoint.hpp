@@ -16,7 +16,7 @@
 namespace grainlab {
 
 /// Bumped whenever the payload's layout changes; an older or newer file is refused.
-inline constexpr std::uint32_t kCheckpointFormatVersion = 4;  // 2: the membrane's shear, spin and F; 3: histograms.csv; 4: the validity monitor
+inline constexpr std::uint32_t kCheckpointFormatVersion = 5;  // 2: the membrane's shear, spin and F; 3: histograms.csv; 4: the validity monitor; 5: the contact history block and rolling resistance
 
 /// Writes `payload` to `path` atomically and durably, keeping the previous file as
 /// `<path>.previous`. Throws std::runtime_error naming the file if it cannot (disk full):

@@ -55,6 +55,9 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
                         " polygon particles: pair_style gran/hooke/history has discs only");
   if (held > 0)
     throw ExportRefused(std::to_string(held) + " fixed or kinematic particles (particles[].motion)");
+  if (s.material.rollingFriction > 0)
+    throw ExportRefused("material.rolling_friction = " + shortNum(s.material.rollingFriction) +
+                        ": pair_style gran/hooke/history has no rolling resistance");
   if (s.material.localDamping > 0 && !options.withoutLocalDamping)
     throw ExportRefused("material.local_damping = " + shortNum(s.material.localDamping) +
                         ": LAMMPS has no Cundall local damping (--without-local-damping exports without it)");

@@ -4,15 +4,21 @@
 #include <chrono>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/thread_cpu_clock.hpp"
 
 namespace grainlab::bench {
 
-double PileSpeed::medianRate() const {
-  std::vector<double> v = rates;
+namespace {
+double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
+  if (n == 0) return 0;
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+}  // namespace
+
+double PileSpeed::medianRate() const { return median(rates); }
+double PileSpeed::medianCpuRate() const { return median(cpuRates); }
 
 std::vector<Scene> benchPiles() {
   // The disc pile once more with one far-away polygon: it takes the general path instead of
@@ -25,7 +31,13 @@ std::vector<Scene> benchPiles() {
   far.position = Vec2(10.0, 10.0);
   far.motion = Motion::Fixed;
   general.particles.push_back(far);
-  return {pileScene(50, 50, false), general, pileScene(50, 50, true)};
+  // The disc pile with rolling resistance, as the circular-rolling preset's material has it:
+  // what the rolling couple and its history cost per step.
+  Scene rolling = pileScene(50, 50, false);
+  rolling.name = "disc-pile-rolling";
+  rolling.material.rollingFriction = 0.1;
+  rolling.material.rollingDamping = 0.3;
+  return {pileScene(50, 50, false), general, pileScene(50, 50, true), rolling};
 }
 
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
@@ -47,9 +59,12 @@ PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threa
   if (progress) *progress << "bench: " << scene.name << " settled, timing\n";
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     for (int k = 0; k < steps; ++k) world.step();
+    const double cpu = threadCpuSeconds() - cpu0;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.rates.push_back(world.size() * static_cast<double>(steps) / s);
+    if (threads == 1) r.cpuRates.push_back(world.size() * static_cast<double>(steps) / cpu);
   }
   world.checkHealth();
   return r;

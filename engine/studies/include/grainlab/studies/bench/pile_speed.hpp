@@ -18,12 +18,16 @@ struct PileSpeed {
   double coordination = 0;    ///< contacts per particle (×2) when timing starts
   std::vector<double> rates;  ///< particle-steps per second, one per repeat
   double timestep = 0;        ///< s
+  /// The same per second of the stepping thread's CPU time: on a shared machine, far less
+  /// moved by other programs than the wall-time rates (one thread only; empty otherwise).
+  std::vector<double> cpuRates;
   double medianRate() const;
+  double medianCpuRate() const;
 };
 
 /// The bench's piles, by name: "disc-pile", "disc-pile+1poly" (the same discs and one
 /// far-away polygon: the general path, shape dispatch per pair, instead of the discs-only
-/// one) and "polygon-pile".
+/// one), "polygon-pile" and "disc-pile-rolling" (the disc pile with rolling resistance).
 std::vector<Scene> benchPiles();
 
 /// Settles `scene`'s pile (its first stage's duration), then times `repeats` × `steps` steps
