@@ -11,7 +11,11 @@ namespace grainlab {
 double stiffestSpring(const ParticleStore& particles, const Material& material, int k, bool tangential) {
   const double r = particles.boundingRadius[k];
   const double rotational = 1.0 + particles.mass[k] * r * r / particles.inertia[k];
-  const double normal = material.normalStiffness * (particles.shape[k] == ShapeKind::Disc ? 1.0 : rotational);
+  // A disc's normal force passes through its centre (so does a one-disc clump's); a polygon's
+  // or a clump member's need not.
+  const bool central = particles.shape[k] == ShapeKind::Disc ||
+                       (particles.shape[k] == ShapeKind::Clump && particles.clumpOf(k).members.size() == 1);
+  const double normal = material.normalStiffness * (central ? 1.0 : rotational);
   return tangential ? std::max(normal, material.tangentialStiffness * rotational) : normal;
 }
 
