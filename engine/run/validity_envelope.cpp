@@ -141,10 +141,12 @@ class Envelope {
   ValidityWarning worst_;
 };
 
-// A particle's size as the scene gives it: a disc's radius, a polygon's bounding radius.
+// A particle's size as the scene gives it: a disc's radius, a polygon's or a clump's bounding
+// radius (about the reference point it is given from).
 double givenSize(const ParticleSpec& p) {
   if (p.shape == ShapeKind::Disc) return p.radius;
   double r = 0;
+  for (const ClumpMember& m : p.members) r = std::max(r, m.centre.norm() + m.radius);
   for (const Vec2& v : p.vertices) r = std::max(r, v.norm());
   return r;
 }
@@ -157,7 +159,7 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     // The grains' equal-area diameter: a disc's, or for the elongated polygons L/√aspect
     // (an ellipse of axes L and L/aspect), averaged over the size classes.
     double d = 2 * a.discRadius, smallestWidth = 2 * a.discRadius;
-    if (a.shape == SpecimenRecipe::Shape::Elongated && !a.longAxes.empty()) {
+    if (a.shape != SpecimenRecipe::Shape::Disc && !a.longAxes.empty()) {  // polygons and clumps alike
       d = 0;
       smallestWidth = kInf;
       for (double l : a.longAxes) {

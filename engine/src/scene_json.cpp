@@ -28,11 +28,38 @@ Material parseMaterial(const nlohmann::json& j) {
   return m;
 }
 
+// A clump's member discs: [{"position": [x, y], "radius": r}, ...], positions relative to the
+// particle's position.
+std::vector<ClumpMember> parseClumpMembers(const nlohmann::json& j, const std::string& path) {
+  if (!j.is_array() || j.empty()) {
+    throw SceneError(path, "a clump needs members [{\"position\": [x, y], \"radius\": r}, ...]");
+  }
+  std::vector<ClumpMember> members;
+  for (size_t k = 0; k < j.size(); ++k) {
+    JsonReader m(j[k], path + "[" + std::to_string(k) + "]");
+    if (!m.has("radius")) throw SceneError(m.fieldPath("radius"), "a clump member needs a radius");
+    ClumpMember member;
+    member.radius = m.number("radius", 0, 0, kInf, true);
+    member.centre = m.vec2("position", member.centre);
+    m.finish();
+    members.push_back(member);
+  }
+  try {
+    makeClump(members);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(path, e.what());
+  }
+  return members;
+}
+
 ParticleSpec parseParticle(const nlohmann::json& j, const std::string& path) {
   JsonReader r(j, path);
   ParticleSpec p;
-  const std::string shape = r.choice("shape", "disc", {"disc", "polygon"});
-  if (shape == "disc") {
+  const std::string shape = r.choice("shape", "disc", {"disc", "polygon", "clump"});
+  if (shape == "clump") {
+    p.shape = ShapeKind::Clump;
+    p.members = parseClumpMembers(r.raw("members"), r.fieldPath("members"));
+  } else if (shape == "disc") {
     p.shape = ShapeKind::Disc;
     if (!r.has("radius")) throw SceneError(r.fieldPath("radius"), "a disc needs a radius");
     p.radius = r.number("radius", 0, 0, kInf, true);
@@ -249,6 +276,21 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   return o;
 }
 
+// Box2D's solver here builds one fixture per body: clumps are grainlab's DEM only.
+void refuseClumpsInBox2d(const Scene& scene) {
+  if (scene.solver.engine != SolverSpec::Engine::Box2d) return;
+  for (size_t k = 0; k < scene.particles.size(); ++k) {
+    if (scene.particles[k].shape == ShapeKind::Clump) {
+      throw SceneError("particles[" + std::to_string(k) + "].shape",
+                       "clumps run in the dem engine only (solver.engine \"box2d\" builds one shape per body)");
+    }
+  }
+  if (scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Clump) {
+    throw SceneError("assembly.shape",
+                     "clumps run in the dem engine only (solver.engine \"box2d\" builds one shape per body)");
+  }
+}
+
 }  // namespace
 
 Scene parseScene(const nlohmann::json& json) {
@@ -308,6 +350,7 @@ Scene parseScene(const nlohmann::json& json) {
     scene.stages.push_back(free);
   }
   scene.solver = parseSolver(r.raw("solver"));
+  refuseClumpsInBox2d(scene);
   scene.output = parseOutput(r.raw("output"));
   scene.startFrom = parseStartFrom(r.raw("start_from"));
   r.finish();
