@@ -38,12 +38,13 @@ int benchCommand(const std::vector<std::string>& args) {
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }
   if (results.empty()) {
-    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile)\n";
+    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile, clump-pile)\n";
     return 2;
   }
   if (results.size() == scenes.size()) {
     std::cout << "discs-only path / general path: " << results[0].medianRate() / results[1].medianRate() << "\n";
     std::cout << "polygons / discs: " << results[2].medianRate() / results[0].medianRate() << "\n";
+    std::cout << "3-disc clumps / discs (per clump-step): " << results[3].medianRate() / results[0].medianRate() << "\n";
     // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
     // step it is slower, per simulated second the timestep ratio counts too.
     for (size_t k : {size_t{0}, size_t{2}}) {

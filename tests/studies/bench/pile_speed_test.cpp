@@ -27,7 +27,10 @@ TEST(PileSpeed, MedianOfOddAndEvenRepeats) {
 
 TEST(PileSpeed, TheGeneralPathPileIsTheDiscPileAndOnePolygon) {
   const std::vector<Scene> piles = benchPiles();
-  ASSERT_EQ(piles.size(), 3u);
+  ASSERT_EQ(piles.size(), 4u);
+  EXPECT_EQ(piles[3].name, "clump-pile");
+  EXPECT_EQ(piles[3].particles.size(), piles[0].particles.size());
+  EXPECT_EQ(piles[3].particles.back().members.size(), 3u);
   EXPECT_EQ(piles[1].name, "disc-pile+1poly");
   EXPECT_EQ(piles[1].particles.size(), piles[0].particles.size() + 1);
   EXPECT_EQ(piles[1].particles.back().shape, ShapeKind::Polygon);

@@ -25,7 +25,7 @@ std::vector<Scene> benchPiles() {
   far.position = Vec2(10.0, 10.0);
   far.motion = Motion::Fixed;
   general.particles.push_back(far);
-  return {pileScene(50, 50, false), general, pileScene(50, 50, true)};
+  return {pileScene(50, 50, false), general, pileScene(50, 50, true), clumpPileScene(50, 50)};
 }
 
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
