@@ -276,8 +276,20 @@ OutputSpec parseOutput(const nlohmann::json& j) {
   return o;
 }
 
-// Box2D's solver here builds one fixture per body: clumps are grainlab's DEM only.
-void refuseClumpsInBox2d(const Scene& scene) {
+// Box2D's solver here builds one fixture per body: clumps are grainlab's DEM only. And clump
+// contacts are disc contacts: a scene with clumps has no polygons.
+void refuseClumpsWhereTheyCannotRun(const Scene& scene) {
+  const bool clumpAssembly = scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Clump;
+  int firstClump = -1, firstPolygon = -1;
+  for (size_t k = 0; k < scene.particles.size(); ++k) {
+    if (scene.particles[k].shape == ShapeKind::Clump && firstClump < 0) firstClump = static_cast<int>(k);
+    if (scene.particles[k].shape == ShapeKind::Polygon && firstPolygon < 0) firstPolygon = static_cast<int>(k);
+  }
+  const bool polygonAssembly = scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Elongated;
+  if ((firstClump >= 0 || clumpAssembly) && (firstPolygon >= 0 || polygonAssembly)) {
+    const std::string field = firstClump >= 0 ? "particles[" + std::to_string(firstClump) + "].shape" : "assembly.shape";
+    throw SceneError(field, "a scene with clumps cannot also have polygons (clump contacts are between discs)");
+  }
   if (scene.solver.engine != SolverSpec::Engine::Box2d) return;
   for (size_t k = 0; k < scene.particles.size(); ++k) {
     if (scene.particles[k].shape == ShapeKind::Clump) {
@@ -350,7 +362,7 @@ Scene parseScene(const nlohmann::json& json) {
     scene.stages.push_back(free);
   }
   scene.solver = parseSolver(r.raw("solver"));
-  refuseClumpsInBox2d(scene);
+  refuseClumpsWhereTheyCannotRun(scene);
   scene.output = parseOutput(r.raw("output"));
   scene.startFrom = parseStartFrom(r.raw("start_from"));
   r.finish();

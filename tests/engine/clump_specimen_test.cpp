@@ -136,6 +136,10 @@ TEST(ClumpScene, KeysAreRefusedByField) {
   j["solver"] = {{"engine", "box2d"}};
   EXPECT_EQ(fieldOf(j), "particles[0].shape");
 
+  j = oneClump();
+  j["particles"].push_back({{"shape", "polygon"}, {"vertices", {{0, 0}, {0.001, 0}, {0, 0.001}}}, {"position", {0.01, 0}}});
+  EXPECT_EQ(fieldOf(j), "particles[0].shape");
+
   json a = presetScene("clump-random-quick");
   a["assembly"]["clump_discs"] = 1;
   EXPECT_EQ(fieldOf(a), "assembly.clump_discs");
