@@ -141,6 +141,11 @@ class Envelope {
   ValidityWarning worst_;
 };
 
+// The scene key that sets a particle's size.
+const char* shapeKey(const ParticleSpec& p) {
+  return p.shape == ShapeKind::Disc ? "radius" : p.shape == ShapeKind::Clump ? "members" : "vertices";
+}
+
 // A particle's size as the scene gives it: a disc's radius, a polygon's or a clump's bounding
 // radius (about the reference point it is given from).
 double givenSize(const ParticleSpec& p) {
@@ -196,7 +201,7 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     const double spread = *largest / *smallest;
     envelope.check("size_ratio", spread,
                    "particles[" + std::to_string(odd) + "]." +
-                       (scene.particles[odd].shape == ShapeKind::Disc ? "radius" : "vertices"),
+                       shapeKey(scene.particles[odd]),
                    "the largest particle is " + threeSignificant(spread) + " times the smallest");
   }
 }
@@ -228,7 +233,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       }
     }
     if (deepestParticle >= 0) {
-      const char* key = scene.particles[deepestParticle].shape == ShapeKind::Disc ? "radius" : "vertices";
+      const char* key = shapeKey(scene.particles[deepestParticle]);
       envelope.check("initial_overlap", deepest, "particles[" + std::to_string(deepestParticle) + "]." + key,
                      "particle " + std::to_string(deepestParticle) + " starts " + threeSignificant(deepest) +
                          " of its radius inside a neighbour or wall");
