@@ -38,7 +38,7 @@ int benchCommand(const std::vector<std::string>& args) {
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
   }
   if (results.empty()) {
-    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile, disc-pile-rolling)\n";
+    std::cerr << "grainlab bench: no scene named " << only << " (disc-pile, disc-pile+1poly, polygon-pile, disc-pile-rolling, clump-pile)\n";
     return 2;
   }
   if (results.size() == scenes.size()) {
@@ -50,6 +50,7 @@ int benchCommand(const std::vector<std::string>& args) {
       std::cout << " (by CPU time: " << results[0].medianCpuRate() / results[3].medianCpuRate() << ")";
     }
     std::cout << "\n";
+    std::cout << "3-disc clumps / discs (per clump-step): " << results[4].medianRate() / results[0].medianRate() << "\n";
     // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
     // step it is slower, per simulated second the timestep ratio counts too.
     for (size_t k : {size_t{0}, size_t{2}}) {

@@ -179,16 +179,29 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
   const auto v = world.velocities();
   std::string particles = "id,shape,x,y,angle,vx,vy,spin,radius,boundary\n";
   for (int k = 0; k < world.size(); ++k) {
-    particles += std::to_string(k) + (world.shapes()[k] == ShapeKind::Disc ? ",disc," : ",polygon,") +
+    const ShapeKind shape = world.shapes()[k];
+    particles += std::to_string(k) + (shape == ShapeKind::Disc ? ",disc," : shape == ShapeKind::Clump ? ",clump," : ",polygon,") +
                  num(x[k].x()) + "," + num(x[k].y()) + "," + num(world.angles()[k]) + "," + num(v[k].x()) + "," +
                  num(v[k].y()) + "," + num(world.spins()[k]) + "," + num(world.boundingRadii()[k]) + "," +
                  (world.boundaryFlags()[k] ? "1" : "0") + "\n";
   }
   // A final file that cannot be written (a full disk) fails the run: summary.json, small and
   // written last, then says so if it can be written itself.
+  // A clump's row is its body (centroid, angle, bounding radius); its discs are listed here.
+  std::string members = "id,member,x,y,radius\n";
+  std::vector<ClumpMember> world_members;
+  for (int k = 0; k < world.size() && world.hasClumps(); ++k) {
+    if (world.shapes()[k] != ShapeKind::Clump) continue;
+    world.worldMembers(k, world_members);
+    for (size_t m = 0; m < world_members.size(); ++m) {
+      members += std::to_string(k) + "," + std::to_string(m) + "," + num(world_members[m].centre.x()) + "," +
+                 num(world_members[m].centre.y()) + "," + num(world_members[m].radius) + "\n";
+    }
+  }
   std::string failure;
   try {
     writeFileAtomically((dir / "particles_final.csv").string(), particles);
+    if (world.hasClumps()) writeFileAtomically((dir / "clump_members_final.csv").string(), members);
   } catch (const std::exception& e) {
     failure = e.what();
   }

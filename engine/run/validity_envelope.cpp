@@ -141,10 +141,17 @@ class Envelope {
   ValidityWarning worst_;
 };
 
-// A particle's size as the scene gives it: a disc's radius, a polygon's bounding radius.
+// The scene key that sets a particle's size.
+const char* shapeKey(const ParticleSpec& p) {
+  return p.shape == ShapeKind::Disc ? "radius" : p.shape == ShapeKind::Clump ? "members" : "vertices";
+}
+
+// A particle's size as the scene gives it: a disc's radius, a polygon's or a clump's bounding
+// radius (about the reference point it is given from).
 double givenSize(const ParticleSpec& p) {
   if (p.shape == ShapeKind::Disc) return p.radius;
   double r = 0;
+  for (const ClumpMember& m : p.members) r = std::max(r, m.centre.norm() + m.radius);
   for (const Vec2& v : p.vertices) r = std::max(r, v.norm());
   return r;
 }
@@ -157,7 +164,7 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     // The grains' equal-area diameter: a disc's, or for the elongated polygons L/√aspect
     // (an ellipse of axes L and L/aspect), averaged over the size classes.
     double d = 2 * a.discRadius, smallestWidth = 2 * a.discRadius;
-    if (a.shape == SpecimenRecipe::Shape::Elongated && !a.longAxes.empty()) {
+    if (a.shape != SpecimenRecipe::Shape::Disc && !a.longAxes.empty()) {  // polygons and clumps alike
       d = 0;
       smallestWidth = kInf;
       for (double l : a.longAxes) {
@@ -194,7 +201,7 @@ void assessAlone(const Scene& scene, Envelope& envelope) {
     const double spread = *largest / *smallest;
     envelope.check("size_ratio", spread,
                    "particles[" + std::to_string(odd) + "]." +
-                       (scene.particles[odd].shape == ShapeKind::Disc ? "radius" : "vertices"),
+                       shapeKey(scene.particles[odd]),
                    "the largest particle is " + threeSignificant(spread) + " times the smallest");
   }
 }
@@ -226,7 +233,7 @@ void assess(const Scene& scene, const World& world, const RunCost* cost, double 
       }
     }
     if (deepestParticle >= 0) {
-      const char* key = scene.particles[deepestParticle].shape == ShapeKind::Disc ? "radius" : "vertices";
+      const char* key = shapeKey(scene.particles[deepestParticle]);
       envelope.check("initial_overlap", deepest, "particles[" + std::to_string(deepestParticle) + "]." + key,
                      "particle " + std::to_string(deepestParticle) + " starts " + threeSignificant(deepest) +
                          " of its radius inside a neighbour or wall");

@@ -212,16 +212,29 @@ void VtkWriter::writeFrame(const World& world) {
     const bool disc = world.shapes()[k] == ShapeKind::Disc;
     addPoint(x[k], k, disc ? world.boundingRadii()[k] : 0.0);
   }
-  // VTK numbers cells verts first, then polys: the discs' ids, then the polygons'.
+  // VTK numbers cells verts first, then polys: the discs' and clump members' ids, then the
+  // polygons'.
   std::int64_t next = n;
+  std::vector<ClumpMember> members;
   for (int k = 0; k < n; ++k) {
+    if (world.shapes()[k] == ShapeKind::Clump) {
+      // A clump is drawn as its discs: one vertex cell per member, carrying the clump's id.
+      world.worldMembers(k, members);
+      for (const ClumpMember& m : members) {
+        addPoint(m.centre, k, m.radius);
+        particles.verts.connectivity.push_back(next++);
+        particles.verts.close();
+        cellId.push_back(k);
+      }
+      continue;
+    }
     if (world.shapes()[k] != ShapeKind::Disc) continue;
     particles.verts.connectivity.push_back(k);
     particles.verts.close();
     cellId.push_back(k);
   }
   for (int k = 0; k < n; ++k) {
-    if (world.shapes()[k] == ShapeKind::Disc) continue;
+    if (world.shapes()[k] != ShapeKind::Polygon) continue;
     world.worldVertices(k, corners);
     for (const Vec2& p : corners) {
       addPoint(p, k, 0.0);

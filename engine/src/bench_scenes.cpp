@@ -46,4 +46,18 @@ Scene pileScene(int columns, int rows, bool polygons, std::uint64_t seed) {
   return scene;
 }
 
+Scene clumpPileScene(int columns, int rows, std::uint64_t seed) {
+  Scene scene = pileScene(columns, rows, true, seed);
+  scene.name = "clump-pile";
+  std::mt19937_64 rng(seed + 1);
+  auto uniform = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  for (ParticleSpec& p : scene.particles) {
+    const double size = 0.002 * (0.9 + 0.2 * uniform());
+    p.shape = ShapeKind::Clump;
+    p.vertices.clear();
+    p.members = {{Vec2(-0.75 * size, 0), 0.5 * size}, {Vec2(0, 0), 0.5 * size}, {Vec2(0.75 * size, 0), 0.5 * size}};
+  }
+  return scene;
+}
+
 }  // namespace grainlab

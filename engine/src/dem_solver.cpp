@@ -26,7 +26,8 @@ DemSolver::DemSolver(ParticleStore& particles, const Material& material, int thr
       material_(material),
       profile_(profile),
       pool_(makePool(threads)),
-      contacts_(particles, material, skinFraction, pool_.get(), profile) {}
+      contacts_(particles, material, skinFraction, pool_.get(), profile),
+      skinFraction_(skinFraction) {}
 
 DemSolver::~DemSolver() = default;
 
@@ -36,12 +37,24 @@ void DemSolver::forEachParticleRange(const std::function<void(int, int)>& body) 
 }
 
 void DemSolver::initialize(double dt) {
-  contacts_.initialize();
+  members_.reset();
+  if (!particles_.clumps.empty()) {
+    members_ = std::make_unique<MemberContactSolver>(particles_, material_, skinFraction_, profile_);
+    members_->initialize();
+  } else {
+    contacts_.initialize();
+  }
   for (int k = 0; k < particles_.size(); ++k) {
     particles_.force[k] = particles_.bodyForce(k);
     particles_.torque[k] = 0;
   }
-  contacts_.computeForces(dt, neighborsOutdated_.exchange(false, std::memory_order_relaxed));
+  computeForces(dt);
+}
+
+void DemSolver::computeForces(double dt) {
+  const bool moved = neighborsOutdated_.exchange(false, std::memory_order_relaxed);
+  if (members_) members_->computeForces(dt);  // checks its members' moves itself
+  else contacts_.computeForces(dt, moved);
 }
 
 // The step, as a pipeline: each particle is kicked and drifted by the forces of the last step
@@ -51,16 +64,16 @@ void DemSolver::step(double dt, std::int64_t) {
   auto t0 = Clock::now();
   forEachParticleRange([&](int begin, int end) {
     leapfrogAdvance(particles_, dt, begin, end);
-    if (contacts_.movedOutOfSkin(begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
+    if (!members_ && contacts_.movedOutOfSkin(begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
   });
   auto t1 = Clock::now();
-  contacts_.computeForces(dt, neighborsOutdated_.exchange(false, std::memory_order_relaxed));
+  computeForces(dt);
   profile_.integrate += seconds(t0, t1);
 }
 
 double DemSolver::packingTimestep(int* particle, int* contacts) const {
   std::vector<int> count;
-  contacts_.countContacts(count);
+  members_ ? members_->countContacts(count) : contacts_.countContacts(count);
   return grainlab::packingTimestep(particles_, material_, count, particle, contacts);
 }
 

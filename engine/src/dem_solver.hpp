@@ -1,12 +1,14 @@
 #pragma once
 // The dem engine ("solver": {"engine": "dem"}, the default): grainlab's own contact laws
 // (ContactSolver) and leapfrog integration in double precision, on one thread or several
-// with bit-identical results.
+// with bit-identical results. A scene with clumps has its contacts between member discs
+// (MemberContactSolver) instead of between bodies (ContactSolver).
 #include <atomic>
 #include <functional>
 #include <memory>
 
 #include "contact_solver.hpp"
+#include "member_contacts.hpp"
 #include "solver.hpp"
 
 namespace grainlab {
@@ -22,7 +24,9 @@ class DemSolver final : public Solver {
 
   void initialize(double dt) override;
   void step(double dt, std::int64_t step) override;
-  void frictionChanged(double) override { contacts_.clearTangentialHistory(); }
+  void frictionChanged(double) override {
+    members_ ? members_->clearTangentialHistory() : contacts_.clearTangentialHistory();
+  }
 
   double timestepScale() const override { return 1.0; }
   bool boundedByCriticalTimestep() const override { return true; }
@@ -30,23 +34,29 @@ class DemSolver final : public Solver {
   double contactStiffness(double) const override { return material_.normalStiffness; }
   bool velocitiesLagHalfStep() const override { return true; }
 
-  void contacts(std::vector<ContactRecord>& out) const override { contacts_.contacts(out); }
-  double elasticEnergy() const override { return contacts_.elasticEnergy(); }
+  void contacts(std::vector<ContactRecord>& out) const override {
+    members_ ? members_->contacts(out) : contacts_.contacts(out);
+  }
+  double elasticEnergy() const override { return members_ ? members_->elasticEnergy() : contacts_.elasticEnergy(); }
   void checkOverlaps(std::int64_t step, double dt, double criticalDt) const override {
-    contacts_.checkOverlaps(step, dt, criticalDt);
+    members_ ? members_->checkOverlaps(step, dt, criticalDt) : contacts_.checkOverlaps(step, dt, criticalDt);
   }
 
   bool resumable(std::int64_t) const override { return true; }
-  void persist(StateArchive& a, double) override { contacts_.persist(a); }
+  void persist(StateArchive& a, double) override { members_ ? members_->persist(a) : contacts_.persist(a); }
 
  private:
   void forEachParticleRange(const std::function<void(int, int)>& body);
+  // The next step's forces, by whichever contact solver the scene has.
+  void computeForces(double dt);
 
   ParticleStore& particles_;
   const Material& material_;
   Profile& profile_;
   std::unique_ptr<WorkerPool> pool_;  // null when serial
   ContactSolver contacts_;
+  std::unique_ptr<MemberContactSolver> members_;  // set by initialize() when the store has clumps
+  const double skinFraction_;
   // Set by the step's integration pass when some particle moved far enough to need a new
   // neighbour list; each thread checks its own particles, so none reads the others' lines.
   std::atomic<bool> neighborsOutdated_{true};

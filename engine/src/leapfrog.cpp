@@ -20,9 +20,9 @@ void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end) {
     x[k] += v[k] * dt;
     if (w[k] != 0) {
       angle[k] += w[k] * dt;
-      // Only polygons' contacts depend on their orientation: a disc's rotation is kept in
+      // Only polygons' and clumps' contacts depend on their orientation: a disc's rotation is kept in
       // its angle alone (sincos was a fifth of a disc pile's step).
-      if (particles.shape[k] == ShapeKind::Polygon) ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);
+      if (particles.shape[k] != ShapeKind::Disc) ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);
     }
     f[k] = particles.bodyForce(k);
     tau[k] = 0;

@@ -17,6 +17,16 @@ int ParticleStore::add(const ParticleSpec& spec, const Material& material) {
     area = discArea(spec.radius);
     polar = 0.5 * area * spec.radius * spec.radius;
     bounding = spec.radius;
+  } else if (spec.shape == ShapeKind::Clump) {
+    Vec2 centroid;
+    Clump clump = makeClump(spec.members, &centroid);
+    // Members are relative to `position` in the body frame turned by `angle`, as vertices are.
+    centre = spec.position + rotate(centroid, spec.angle);
+    area = clump.area;
+    polar = clump.polarMoment;
+    bounding = clump.circumradius;
+    polygonIndex = static_cast<int>(clumps.size());
+    clumps.push_back(std::move(clump));
   } else {
     Vec2 centroid;
     Polygon poly = makePolygon(spec.vertices, &centroid);
@@ -63,7 +73,12 @@ int ParticleStore::addWall(const Wall& wall) {
 }
 
 double ParticleStore::area(int k) const {
-  return shape[k] == ShapeKind::Disc ? discArea(boundingRadius[k]) : polygonOf(k).area;
+  switch (shape[k]) {
+    case ShapeKind::Disc: return discArea(boundingRadius[k]);
+    case ShapeKind::Polygon: return polygonOf(k).area;
+    case ShapeKind::Clump: return clumpOf(k).area;
+  }
+  return 0;
 }
 
 }  // namespace grainlab

@@ -1,6 +1,7 @@
 #include "grainlab/presets.hpp"
 
 #include "grainlab/errors.hpp"
+#include "specimen_shapes.hpp"
 
 namespace grainlab {
 namespace {
@@ -34,9 +35,25 @@ json paperStages(double shearRate) {
   });
 }
 
+// The paper's elongated hexagons (aspect ratio 1.5 of their ellipse, 6 vertices): their long
+// axis over their smallest width, √3 (1.732). A clump of discs in a line is given the same.
+double hexagonLengthOverWidth() {
+  return 1.0 / specimen::polygonMinWidth(specimen::ellipsePolygon(1.0, 1.5, 6));
+}
+
 json paperAssembly(const std::string& kind, bool quick) {
   json a;
-  if (kind == "circular") {
+  if (kind.starts_with("clump:")) {
+    // Three discs in a line with the hexagons' sizes (long axes), grading and length over width.
+    a = {{"shape", "clump"}, {"clump_discs", 3}, {"aspect_ratio", hexagonLengthOverWidth()}};
+    const std::string orientation = kind.substr(6);
+    if (orientation == "random") {
+      a["orientation"] = "random";
+    } else {
+      a["orientation"] = "bedding";
+      a["bedding_angle_deg"] = std::stod(orientation);
+    }
+  } else if (kind == "circular") {
     a = {{"shape", "disc"}, {"disc_radius", 0.002}};
   } else {
     a = {{"shape", "elongated"}, {"aspect_ratio", 1.5}, {"vertices", 6}};
@@ -144,7 +161,8 @@ const std::vector<std::pair<std::string, std::string>>& paperPresets() {
   static const std::vector<std::pair<std::string, std::string>> presets{
       {"circular", "circular"},           {"elongated-random", "random"},
       {"elongated-bedding-0", "0"},       {"elongated-bedding-30", "30"},
-      {"elongated-bedding-60", "60"},     {"elongated-bedding-90", "90"}};
+      {"elongated-bedding-60", "60"},     {"elongated-bedding-90", "90"},
+      {"clump-random", "clump:random"},   {"clump-bedding-30", "clump:30"}};
   return presets;
 }
 

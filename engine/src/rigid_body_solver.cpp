@@ -141,6 +141,9 @@ void RigidBodySolver::addParticle(int k, const BodyState& state) {
   fixture.userData.pointer = encode(k);
   b2CircleShape circle;
   b2PolygonShape polygon;
+  if (particles_.shape[k] == ShapeKind::Clump) {
+    throw SimulationError("clumps run in the dem engine only (the box2d engine builds one shape per body)");
+  }
   if (particles_.shape[k] == ShapeKind::Disc) {
     circle.m_radius = static_cast<float>(particles_.boundingRadius[k] * lengthScale_);
     fixture.shape = &circle;

@@ -31,11 +31,38 @@ Material parseMaterial(const nlohmann::json& j) {
   return m;
 }
 
+// A clump's member discs: [{"position": [x, y], "radius": r}, ...], positions relative to the
+// particle's position.
+std::vector<ClumpMember> parseClumpMembers(const nlohmann::json& j, const std::string& path) {
+  if (!j.is_array() || j.empty()) {
+    throw SceneError(path, "a clump needs members [{\"position\": [x, y], \"radius\": r}, ...]");
+  }
+  std::vector<ClumpMember> members;
+  for (size_t k = 0; k < j.size(); ++k) {
+    JsonReader m(j[k], path + "[" + std::to_string(k) + "]");
+    if (!m.has("radius")) throw SceneError(m.fieldPath("radius"), "a clump member needs a radius");
+    ClumpMember member;
+    member.radius = m.number("radius", 0, 0, kInf, true);
+    member.centre = m.vec2("position", member.centre);
+    m.finish();
+    members.push_back(member);
+  }
+  try {
+    makeClump(members);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(path, e.what());
+  }
+  return members;
+}
+
 ParticleSpec parseParticle(const nlohmann::json& j, const std::string& path) {
   JsonReader r(j, path);
   ParticleSpec p;
-  const std::string shape = r.choice("shape", "disc", {"disc", "polygon"});
-  if (shape == "disc") {
+  const std::string shape = r.choice("shape", "disc", {"disc", "polygon", "clump"});
+  if (shape == "clump") {
+    p.shape = ShapeKind::Clump;
+    p.members = parseClumpMembers(r.raw("members"), r.fieldPath("members"));
+  } else if (shape == "disc") {
     p.shape = ShapeKind::Disc;
     if (!r.has("radius")) throw SceneError(r.fieldPath("radius"), "a disc needs a radius");
     p.radius = r.number("radius", 0, 0, kInf, true);
@@ -256,15 +283,42 @@ OutputSpec parseOutput(const nlohmann::json& j) {
 // resists rolling by its shape already, and Box2D has no such couple here.
 void refuseRollingWhereNotModelled(const Scene& scene) {
   if (scene.material.rollingFriction == 0) return;
-  bool polygons = scene.assembly && scene.assembly->shape != SpecimenRecipe::Shape::Disc;
-  for (const ParticleSpec& p : scene.particles) polygons = polygons || p.shape != ShapeKind::Disc;
-  if (polygons) {
-    throw SceneError("material.rolling_friction", "rolling resistance is for discs; this scene has polygons, which "
-                                                  "resist rolling by their shape (set it to 0)");
+  bool shaped = scene.assembly && scene.assembly->shape != SpecimenRecipe::Shape::Disc;
+  for (const ParticleSpec& p : scene.particles) shaped = shaped || p.shape != ShapeKind::Disc;
+  if (shaped) {
+    throw SceneError("material.rolling_friction", "rolling resistance is for discs; this scene has polygons or clumps, "
+                                                  "which resist rolling by their shape (set it to 0)");
   }
   if (scene.solver.engine == SolverSpec::Engine::Box2d) {
     throw SceneError("material.rolling_friction", "the box2d engine has no rolling resistance (use the dem engine, or "
                                                   "set it to 0)");
+  }
+}
+
+// Box2D's solver here builds one fixture per body: clumps are grainlab's DEM only. And clump
+// contacts are disc contacts: a scene with clumps has no polygons.
+void refuseClumpsWhereTheyCannotRun(const Scene& scene) {
+  const bool clumpAssembly = scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Clump;
+  int firstClump = -1, firstPolygon = -1;
+  for (size_t k = 0; k < scene.particles.size(); ++k) {
+    if (scene.particles[k].shape == ShapeKind::Clump && firstClump < 0) firstClump = static_cast<int>(k);
+    if (scene.particles[k].shape == ShapeKind::Polygon && firstPolygon < 0) firstPolygon = static_cast<int>(k);
+  }
+  const bool polygonAssembly = scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Elongated;
+  if ((firstClump >= 0 || clumpAssembly) && (firstPolygon >= 0 || polygonAssembly)) {
+    const std::string field = firstClump >= 0 ? "particles[" + std::to_string(firstClump) + "].shape" : "assembly.shape";
+    throw SceneError(field, "a scene with clumps cannot also have polygons (clump contacts are between discs)");
+  }
+  if (scene.solver.engine != SolverSpec::Engine::Box2d) return;
+  for (size_t k = 0; k < scene.particles.size(); ++k) {
+    if (scene.particles[k].shape == ShapeKind::Clump) {
+      throw SceneError("particles[" + std::to_string(k) + "].shape",
+                       "clumps run in the dem engine only (solver.engine \"box2d\" builds one shape per body)");
+    }
+  }
+  if (scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Clump) {
+    throw SceneError("assembly.shape",
+                     "clumps run in the dem engine only (solver.engine \"box2d\" builds one shape per body)");
   }
 }
 
@@ -327,6 +381,7 @@ Scene parseScene(const nlohmann::json& json) {
     scene.stages.push_back(free);
   }
   scene.solver = parseSolver(r.raw("solver"));
+  refuseClumpsWhereTheyCannotRun(scene);
   scene.output = parseOutput(r.raw("output"));
   scene.startFrom = parseStartFrom(r.raw("start_from"));
   refuseRollingWhereNotModelled(scene);

@@ -171,6 +171,14 @@ std::vector<std::pair<std::string, json>> sceneKeyExemplars() {
                              {"orientation", "bedding"}, {"bedding_angle_deg", 30}, {"specimen_diameter", 0.06},
                              {"target_void_ratio", 0.27}, {"particle_count", 200}, {"boundary_radius", 0.0}}},
                            {"boundary", {{"type", "membrane"}}}});
+  scenes.emplace_back("clumps: a clump particle, and a clump assembly",
+                      json{{"particles", json::array({{{"shape", "clump"},
+                                                       {"members", json::array({{{"position", {-0.0008, 0}}, {"radius", 0.001}},
+                                                                                {{"position", {0.0008, 0}}, {"radius", 0.001}}})},
+                                                       {"position", {0, 0.002}}}})}});
+  scenes.emplace_back("clump assembly",
+                      json{{"assembly", {{"shape", "clump"}, {"clump_discs", 3}, {"aspect_ratio", 1.732}}},
+                           {"boundary", {{"type", "membrane"}}}});
   return scenes;
 }
 

@@ -76,6 +76,7 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
   const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
   specimen::SpecimenRandom random(seed);
   const bool discs = recipe.shape == SpecimenRecipe::Shape::Disc;
+  const bool clumps = recipe.shape == SpecimenRecipe::Shape::Clump;
 
   // Largest first: big particles find room while the circle is empty, small ones fill in.
   std::vector<Grain> grains;
@@ -85,7 +86,7 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
   for (auto c = plan.classes.rbegin(); c != plan.classes.rend(); ++c) {
     for (int k = 0; k < c->count; ++k) {
       Grain g;
-      g.shape = discs ? ShapeKind::Disc : ShapeKind::Polygon;
+      g.shape = discs ? ShapeKind::Disc : clumps ? ShapeKind::Clump : ShapeKind::Polygon;
       g.radius = c->radius;
       g.reach = c->reach;
       double angle = 0;
@@ -95,6 +96,7 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
         angle = recipe.orientation == SpecimenRecipe::Orientation::Bedding ? recipe.beddingAngle
                                                                           : 2 * kPi * random.uniform();
         for (const Vec2& v : c->vertices) g.vertices.push_back(rotate(v, angle));
+        for (const ClumpMember& m : c->members) g.members.push_back({rotate(m.centre, angle), m.radius});
       }
       grains.push_back(std::move(g));
       classOf.push_back(&*c);
@@ -121,6 +123,10 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
     p.position = centres[i];
     if (discs) {
       p.radius = classOf[i]->radius;
+    } else if (clumps) {
+      // Body-frame members (long axis along +x about the centroid) turned by `angle`.
+      p.members = classOf[i]->members;
+      p.angle = angles[i];
     } else {
       // Body-frame vertices (long axis along +x, centroid at the origin) turned by `angle`:
       // the angle is then the long axis's direction for the whole run.

@@ -32,13 +32,16 @@ std::vector<double> numberArray(const nlohmann::json& value, const std::string& 
 SpecimenRecipe parseSpecimenRecipe(const nlohmann::json& assembly, const std::string& path) {
   JsonReader r(assembly, path);
   SpecimenRecipe recipe;
-  recipe.shape = r.choice("shape", "disc", {"disc", "elongated"}) == "disc" ? SpecimenRecipe::Shape::Disc
-                                                                           : SpecimenRecipe::Shape::Elongated;
+  const std::string shape = r.choice("shape", "disc", {"disc", "elongated", "clump"});
+  recipe.shape = shape == "disc"        ? SpecimenRecipe::Shape::Disc
+                 : shape == "elongated" ? SpecimenRecipe::Shape::Elongated
+                                        : SpecimenRecipe::Shape::Clump;
   recipe.discRadius = r.number("disc_radius", recipe.discRadius, 0, kInfinity, true);
   recipe.longAxes = numberArray(r.raw("long_axes"), r.fieldPath("long_axes"), recipe.longAxes);
   recipe.countFractions = numberArray(r.raw("count_fractions"), r.fieldPath("count_fractions"), {});
   recipe.aspectRatio = r.number("aspect_ratio", recipe.aspectRatio, 1, 10);
   recipe.vertices = static_cast<int>(r.integer("vertices", recipe.vertices, 3, kMaxPolygonVertices));
+  recipe.clumpDiscs = static_cast<int>(r.integer("clump_discs", recipe.clumpDiscs, 2, specimen::kMaxClumpDiscs));
   recipe.orientation = r.choice("orientation", "random", {"random", "bedding"}) == "random"
                            ? SpecimenRecipe::Orientation::Random
                            : SpecimenRecipe::Orientation::Bedding;
@@ -74,12 +77,15 @@ SpecimenRecipe parseSpecimenRecipe(const nlohmann::json& assembly, const std::st
 
 nlohmann::json specimenRecipeToJson(const SpecimenRecipe& recipe) {
   nlohmann::json j = {
-      {"shape", recipe.shape == SpecimenRecipe::Shape::Disc ? "disc" : "elongated"},
+      {"shape", recipe.shape == SpecimenRecipe::Shape::Disc        ? "disc"
+                : recipe.shape == SpecimenRecipe::Shape::Elongated ? "elongated"
+                                                                    : "clump"},
       {"disc_radius", recipe.discRadius},
       {"long_axes", recipe.longAxes},
       {"count_fractions", recipe.countFractions},
       {"aspect_ratio", recipe.aspectRatio},
       {"vertices", recipe.vertices},
+      {"clump_discs", recipe.clumpDiscs},
       {"orientation", recipe.orientation == SpecimenRecipe::Orientation::Random ? "random" : "bedding"},
       {"bedding_angle_deg", degrees(recipe.beddingAngle)},
       {"specimen_diameter", recipe.specimenDiameter},

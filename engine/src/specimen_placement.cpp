@@ -63,6 +63,21 @@ bool overlaps(const Grain& a, const Vec2& pa, const std::vector<Vec2>& worldA, c
   // Bounding circles first: cheap, and exact as a rejection (apart circles cannot overlap).
   const double reach = a.reach + b.reach;
   if ((pa - pb).squaredNorm() >= reach * reach) return false;
+  // A clump overlaps where one of its discs does (clumps are placed among clumps and discs).
+  if (a.shape == ShapeKind::Clump || b.shape == ShapeKind::Clump) {
+    const bool aIsClump = a.shape == ShapeKind::Clump;
+    const Grain& clump = aIsClump ? a : b;
+    const Grain& other = aIsClump ? b : a;
+    const Vec2& pc = aIsClump ? pa : pb;
+    const Vec2& po = aIsClump ? pb : pa;
+    const std::vector<Vec2>& worldOther = aIsClump ? worldB : worldA;
+    for (const ClumpMember& m : clump.members) {
+      Grain disc;
+      disc.radius = disc.reach = m.radius;
+      if (overlaps(disc, pc + m.centre, {}, other, po, worldOther)) return true;
+    }
+    return false;
+  }
   const bool discA = a.shape == ShapeKind::Disc, discB = b.shape == ShapeKind::Disc;
   if (discA && discB) return discsOverlap(pa, a.radius, pb, b.radius);
   if (discA) return discPolygonOverlap(pa, a.radius, worldB);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "grainlab/clump.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/shape.hpp"
 #include "specimen_random.hpp"
@@ -16,6 +17,7 @@ struct Grain {
   ShapeKind shape = ShapeKind::Disc;
   double radius = 0;            ///< m, discs
   std::vector<Vec2> vertices;   ///< m, polygons: counter-clockwise about the grain's centre
+  std::vector<ClumpMember> members;  ///< m, clumps: member discs about the grain's centre
   double reach = 0;             ///< m, largest distance of the grain's outline from its centre
 };
 

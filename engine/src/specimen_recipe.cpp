@@ -40,6 +40,13 @@ void checkFields(const SpecimenRecipe& r, const std::string& path) {
   require(finite(r.aspectRatio) && r.aspectRatio >= 1 && r.aspectRatio <= 10, path, "aspect_ratio",
           "must be between 1 and 10");
   require(r.vertices >= 3 && r.vertices <= kMaxPolygonVertices, path, "vertices", "must be between 3 and 8");
+  require(r.clumpDiscs >= 2 && r.clumpDiscs <= kMaxClumpDiscs, path, "clump_discs",
+          "must be between 2 and " + std::to_string(kMaxClumpDiscs));
+  if (r.shape == SpecimenRecipe::Shape::Clump) {
+    require(r.aspectRatio < r.clumpDiscs, path, "aspect_ratio",
+            "must be below clump_discs (" + std::to_string(r.clumpDiscs) +
+                ") for a clump: longer, its discs would not overlap");
+  }
   // A little slack so that ±180° converted to radians is accepted.
   require(finite(r.beddingAngle) && std::abs(r.beddingAngle) <= kPi * (1 + 1e-12), path, "bedding_angle_deg",
           "must be between -180 and 180");
@@ -88,11 +95,19 @@ std::vector<SizeClass> sizeClasses(const SpecimenRecipe& r, const std::string& p
   for (std::size_t i = 0; i < r.longAxes.size(); ++i) {
     SizeClass c;
     c.size = r.longAxes[i];
+    c.fraction = fractions[i];
+    if (r.shape == SpecimenRecipe::Shape::Clump) {
+      c.members = lineClump(r.longAxes[i], r.aspectRatio, r.clumpDiscs);
+      c.area = makeClump(c.members).area;
+      c.reach = 0.5 * r.longAxes[i];
+      c.minWidth = 2 * c.members.front().radius;
+      classes.push_back(std::move(c));
+      continue;
+    }
     c.vertices = ellipsePolygon(r.longAxes[i], r.aspectRatio, r.vertices);
     c.area = polygonArea(c.vertices);
     c.reach = polygonReach(c.vertices);
     c.minWidth = polygonMinWidth(c.vertices);
-    c.fraction = fractions[i];
     classes.push_back(std::move(c));
   }
   return classes;

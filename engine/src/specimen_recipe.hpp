@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/clump.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/specimen.hpp"
 
@@ -12,12 +13,15 @@ namespace grainlab::specimen {
 
 /// The most specimen particles a recipe may ask for (directly or through its size).
 inline constexpr int kMaxSpecimenParticles = 200'000;
+/// The most discs a generated clump may have.
+inline constexpr int kMaxClumpDiscs = 8;
 
 /// One particle size of a recipe.
 struct SizeClass {
-  double size = 0;             ///< m: disc diameter, or polygon long axis L
+  double size = 0;             ///< m: disc diameter, or polygon or clump long axis L
   double radius = 0;           ///< m, discs
   std::vector<Vec2> vertices;  ///< m, polygons: body frame, long axis along +x, centroid at origin
+  std::vector<ClumpMember> members;  ///< m, clumps: body frame, along +x, centroid at origin
   double area = 0;             ///< m²
   double reach = 0;            ///< m, largest distance of the outline from the centroid
   double minWidth = 0;         ///< m, smallest width

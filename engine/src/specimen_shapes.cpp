@@ -31,6 +31,20 @@ std::vector<Vec2> ellipsePolygon(double longAxis, double aspectRatio, int vertex
   return v;
 }
 
+std::vector<ClumpMember> lineClump(double longAxis, double aspectRatio, int count) {
+  if (count < 1) throw std::invalid_argument("lineClump: at least one disc");
+  const double r = 0.5 * longAxis / aspectRatio;
+  const double end = 0.5 * longAxis - r;  // the outer centres
+  std::vector<ClumpMember> members(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    // Mirrored pairs computed once, so the line is symmetric to the bit about the origin.
+    const int mirror = count - 1 - k;
+    const double x = k <= mirror ? -end + (count > 1 ? 2 * end * k / (count - 1) : end) : -members[static_cast<std::size_t>(mirror)].centre.x();
+    members[static_cast<std::size_t>(k)] = {Vec2(2 * k + 1 == count ? 0.0 : x, 0), r};
+  }
+  return members;
+}
+
 double polygonArea(std::span<const Vec2> vertices) {
   double twice = 0;
   for (std::size_t k = 0; k < vertices.size(); ++k) {

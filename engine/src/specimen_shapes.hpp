@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "grainlab/clump.hpp"
 #include "grainlab/math.hpp"
 
 namespace grainlab::specimen {
@@ -15,6 +16,11 @@ namespace grainlab::specimen {
 /// is symmetric about the x axis and, for even n, about the origin: then it spans exactly
 /// longAxis along x. For odd n it spans (1 + cos(π/n))/2 of longAxis.
 std::vector<Vec2> ellipsePolygon(double longAxis, double aspectRatio, int vertexCount);
+
+/// `count` equal discs with centres evenly along the x axis, spanning exactly `longAxis` (m)
+/// with width longAxis / aspectRatio (the discs' diameter), centred on the origin (the
+/// union's centroid, by symmetry). Neighbours overlap when aspectRatio < count.
+std::vector<ClumpMember> lineClump(double longAxis, double aspectRatio, int count);
 
 /// Area (m²) of a simple polygon given counter-clockwise.
 double polygonArea(std::span<const Vec2> vertices);

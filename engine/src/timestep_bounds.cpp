@@ -12,7 +12,11 @@ double stiffestSpring(const ParticleStore& particles, const Material& material, 
   const double r = particles.boundingRadius[k];
   const double g = particles.mass[k] * r * r / particles.inertia[k];
   const double rotational = 1.0 + g;
-  const double normal = material.normalStiffness * (particles.shape[k] == ShapeKind::Disc ? 1.0 : rotational);
+  // A disc's normal force passes through its centre (so does a one-disc clump's); a polygon's
+  // or a clump member's need not.
+  const bool central = particles.shape[k] == ShapeKind::Disc ||
+                       (particles.shape[k] == ShapeKind::Clump && particles.clumpOf(k).members.size() == 1);
+  const double normal = material.normalStiffness * (central ? 1.0 : rotational);
   if (!tangential) return normal;
   if (material.rollingFriction > 0 && particles.shape[k] == ShapeKind::Disc) {
     // The rolling spring k_r = β k_t R*² (R* <= R) acts on the rotation the tangential spring

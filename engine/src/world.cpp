@@ -73,6 +73,14 @@ void World::worldVertices(int i, std::vector<Vec2>& out) const {
   for (int k = 0; k < poly.count; ++k) out[k] = particles_.position[i] + rotate(poly.vertices[k], particles_.angle[i]);
 }
 
+void World::worldMembers(int i, std::vector<ClumpMember>& out) const {
+  const Clump& c = clump(i);
+  out.resize(c.members.size());
+  for (size_t k = 0; k < c.members.size(); ++k) {
+    out[k] = {particles_.position[i] + rotate(c.members[k].centre, particles_.angle[i]), c.members[k].radius};
+  }
+}
+
 template <class Action>
 void World::namingDivergence(Action&& action) {
   try {

@@ -51,8 +51,19 @@ class Run:
         return pandas.DataFrame(self.series)
 
     def particles(self):
-        """The final particles: id, shape, x, y, angle, vx, vy, spin, radius, boundary."""
+        """The final particles: id, shape, x, y, angle, vx, vy, spin, radius, boundary. A clump's
+        row is its body: its centroid, its angle, and its bounding radius (clump_members() has
+        its discs)."""
         return self._particles
+
+    def clump_members(self):
+        """The final clumps' discs: id (the clump's particle id), member, x, y, radius, read
+        from the output directory's clump_members_final.csv; None when the run has no clumps
+        or wrote no output directory (run with out=)."""
+        if self.out is None:
+            return None
+        path = os.path.join(self.out, "clump_members_final.csv")
+        return read_csv(path) if os.path.exists(path) else None
 
     def contacts(self):
         """The final contacts: i, j, px, py, nx, ny, fn, ft, lix, liy, ljx, ljy (contracts.md);

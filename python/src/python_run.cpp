@@ -53,7 +53,8 @@ class Collector : public RunObserver {
     const auto v = world.velocities();
     for (int k = 0; k < world.size(); ++k) {
       id_.push_back(k);
-      shape_.push_back(world.shapes()[k] == ShapeKind::Disc ? "disc" : "polygon");
+      const ShapeKind kind = world.shapes()[k];
+      shape_.push_back(kind == ShapeKind::Disc ? "disc" : kind == ShapeKind::Clump ? "clump" : "polygon");
       px_.push_back(x[k].x());
       py_.push_back(x[k].y());
       angle_.push_back(world.angles()[k]);

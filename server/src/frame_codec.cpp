@@ -134,6 +134,11 @@ nlohmann::json shapesMessage(const World& world) {
     const auto k = static_cast<std::size_t>(i);
     if (kinds[k] == ShapeKind::Disc) {
       shapes.push_back({{"disc", radii[k]}});
+    } else if (kinds[k] == ShapeKind::Clump) {
+      // Body-frame member discs about the centroid: [x0, y0, r0, x1, y1, r1, ...].
+      nlohmann::json m = nlohmann::json::array();
+      for (const ClumpMember& d : world.clump(i).members) m.insert(m.end(), {d.centre.x(), d.centre.y(), d.radius});
+      shapes.push_back({{"clump", std::move(m)}});
     } else {
       const Polygon& p = world.polygon(i);
       nlohmann::json v = nlohmann::json::array();

@@ -86,6 +86,10 @@ TEST(Scene, ErrorsNameTheField) {
   j = presetScene("elongated-random-quick");
   j["material"]["rolling_friction"] = 0.1;
   EXPECT_EQ(fieldOf(j), "material.rolling_friction");
+  // Clumps resist rolling by their shape, and their contact loop has no rolling law.
+  j = presetScene("clump-random-quick");
+  j["material"]["rolling_friction"] = 0.1;
+  EXPECT_EQ(fieldOf(j), "material.rolling_friction");
   j = oneDisc();
   j["material"] = {{"rolling_friction", 0.1}};
   j["solver"] = {{"engine", "box2d"}};

@@ -504,8 +504,10 @@ TEST(SpecimenJson, ReadsEveryKeyAndRoundTrips) {
                             {"aspect_ratio", 2.0},         {"vertices", 8},
                             {"orientation", "bedding"},    {"bedding_angle_deg", 30},
                             {"specimen_diameter", 0.1},    {"target_void_ratio", 0.3},
-                            {"particle_count", 400},       {"boundary_radius", 0.0015}};
+                            {"particle_count", 400},       {"boundary_radius", 0.0015},
+                            {"clump_discs", 5}};
   const Recipe r = parseSpecimenRecipe(j, "assembly");
+  EXPECT_EQ(r.clumpDiscs, 5);
   EXPECT_EQ(r.shape, Recipe::Shape::Elongated);
   EXPECT_EQ(r.discRadius, 0.0025);
   EXPECT_EQ(r.longAxes, (std::vector<double>{0.004, 0.006}));

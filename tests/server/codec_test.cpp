@@ -52,6 +52,26 @@ TEST(FrameCodec, EncodesParticlesAndCompressedContacts) {
   EXPECT_THROW(decodeFrame(bytes.substr(0, bytes.size() - 1)), std::invalid_argument);
 }
 
+TEST(FrameCodec, AClumpsShapeIsItsDiscsAboutItsCentroid) {
+  World world(Material{});
+  ParticleSpec clump;
+  clump.shape = ShapeKind::Clump;
+  // Unequal discs: the centroid is off the reference point, nearer the bigger disc.
+  clump.members = {{Vec2(0, 0), 0.002}, {Vec2(0.0025, 0), 0.001}};
+  clump.position = Vec2(0.01, 0.02);
+  world.addParticle(clump);
+  const auto shapes = shapesMessage(world);
+  const auto& m = shapes["shapes"][0]["clump"];
+  ASSERT_EQ(m.size(), 6u);
+  EXPECT_DOUBLE_EQ(m[2].get<double>(), 0.002);
+  EXPECT_DOUBLE_EQ(m[5].get<double>(), 0.001);
+  // About the centroid: the members' centres in the world are the reference point's offsets.
+  EXPECT_NEAR(world.positions()[0].x() + m[0].get<double>(), 0.01, 1e-15);
+  EXPECT_NEAR(world.positions()[0].x() + m[3].get<double>(), 0.0125, 1e-15);
+  EXPECT_GT(world.positions()[0].x(), 0.01);
+  EXPECT_LT(world.positions()[0].x(), 0.0115);
+}
+
 TEST(SeriesFormat, CsvIsTheClisAndJsonHasNullForNotMeasured) {
   SeriesFormat format;
   SampleRecord s;

@@ -8,7 +8,7 @@
 // is filled and outlined in paths of at most PATH_CHUNK shapes; chains likewise by width
 // class, with butt caps (round caps doubled their cost). tests/web/render_perf_test.mjs
 // measures 2,500 polygons against 20 frames/s.
-import { DISC } from './particle_shapes.js';
+import { CLUMP, DISC } from './particle_shapes.js';
 import {
   BOUNDARY_FILL, BOUNDARY_STROKE, CHAIN_COLOUR, FORCE_PALETTE, ORIENTATION_PALETTE,
 } from './colour_scales.js';
@@ -207,6 +207,15 @@ export class ParticleView {
     }
     const angle = particles[4 * i + 2];
     const c = Math.cos(angle), s = Math.sin(angle);
+    if (shapes.kind[i] === CLUMP) {
+      const m = shapes.members;
+      for (let a = 3 * shapes.memberStart[i]; a < 3 * shapes.memberStart[i + 1]; a += 3) {
+        const mx = x + c * m[a] - s * m[a + 1], my = y + s * m[a] + c * m[a + 1], r = m[a + 2];
+        ctx.moveTo(mx + r, my);
+        ctx.arc(mx, my, r, 0, 2 * Math.PI);
+      }
+      return;
+    }
     const v = shapes.vertices;
     const from = 2 * shapes.vertexStart[i], to = 2 * shapes.vertexStart[i + 1];
     ctx.moveTo(x + c * v[from] - s * v[from + 1], y + s * v[from] + c * v[from + 1]);

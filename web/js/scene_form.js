@@ -130,7 +130,8 @@ function applyPath(scene, name) {
   scene.stages[k] = stage;
 }
 const hasAssembly = (scene) => Boolean(scene.assembly);
-const elongated = (scene) => scene.assembly?.shape === 'elongated';
+// Clumps share the elongated polygons' sizes, aspect ratio and orientation keys.
+const elongated = (scene) => scene.assembly?.shape === 'elongated' || scene.assembly?.shape === 'clump';
 
 /**
  * kind: number | integer | text | select. factor: scene value = shown value × factor.
@@ -198,9 +199,10 @@ export const SCENE_FIELDS = [
   { section: 'Specimen' },
   {
     key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,
-    options: [['disc', 'circular discs'], ['elongated', 'elongated polygons']], fallback: 'disc',
+    options: [['disc', 'circular discs'], ['elongated', 'elongated polygons'], ['clump', 'clumps of discs in a line']], fallback: 'disc',
   },
   { key: 'aspect_ratio', label: 'Aspect ratio', kind: 'number', paths: fixed('assembly.aspect_ratio'), visible: elongated },
+  { key: 'clump_discs', label: 'Discs per clump', kind: 'integer', paths: fixed('assembly.clump_discs'), visible: (scene) => scene.assembly?.shape === 'clump' },
   {
     key: 'orientation', label: 'Orientation', kind: 'select', paths: fixed('assembly.orientation'), visible: elongated,
     options: [['random', 'random'], ['bedding', 'bedding plane']], fallback: 'random',
@@ -285,7 +287,10 @@ export function describeScene(scene) {
   const parts = [];
   const a = scene.assembly;
   if (a) {
-    const shape = a.shape === 'elongated'
+    const orientation = a.orientation === 'bedding' ? `bedding α = ${a.bedding_angle_deg}°` : 'random orientation';
+    const shape = a.shape === 'clump'
+      ? `clumps of ${a.clump_discs ?? 3} discs (aspect ${a.aspect_ratio ?? 'default'}, ${orientation})`
+      : a.shape === 'elongated'
       ? `elongated polygons (aspect ${a.aspect_ratio ?? 'default'}, ${a.orientation === 'bedding' ? `bedding α = ${a.bedding_angle_deg}°` : 'random orientation'})`
       : `discs of radius ${(a.disc_radius ?? 0.002) * 1e3} mm`;
     parts.push(`${shape} in a ${(a.specimen_diameter ?? 0) * 1e3} mm specimen`);

@@ -8,4 +8,8 @@ namespace grainlab {
 /// with ±10% polydispersity; polygons are hexagons elongated 1.5:1 at seeded random angles.
 Scene pileScene(int columns, int rows, bool polygons, std::uint64_t seed = 1);
 
+/// The polygon pile's box and angles with each hexagon a clump of three discs in a line, as
+/// long as the hexagon (2.5 sizes; discs of half a size, 0.75 of a size apart).
+Scene clumpPileScene(int columns, int rows, std::uint64_t seed = 1);
+
 }  // namespace grainlab

@@ -2,6 +2,7 @@
 // What a scene says about one particle, before it enters the World.
 #include <vector>
 
+#include "grainlab/clump.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/shape.hpp"
 
@@ -18,6 +19,7 @@ struct ParticleSpec {
   ShapeKind shape = ShapeKind::Disc;
   double radius = 0;              ///< disc radius, m (discs only)
   std::vector<Vec2> vertices;     ///< polygon vertices relative to `position`, m (polygons only)
+  std::vector<ClumpMember> members;  ///< member discs relative to `position`, m (clumps only)
   Vec2 position = Vec2::Zero();   ///< m; for polygons the reference point of `vertices`
   double angle = 0;               ///< rad, counter-clockwise
   Vec2 velocity = Vec2::Zero();   ///< m/s

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "grainlab/clump.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/particle.hpp"
@@ -27,6 +28,7 @@ struct ParticleStore {
   /// not move by forces).
   Vec2 bodyForce(int k) const { return motion[k] == Motion::Dynamic ? Vec2(mass[k] * gravity) : Vec2::Zero(); }
   const Polygon& polygonOf(int k) const { return polygons[static_cast<size_t>(shapeIndex[k])]; }
+  const Clump& clumpOf(int k) const { return clumps[static_cast<size_t>(shapeIndex[k])]; }
   /// Solid area of particle k, m².
   double area(int k) const;
 
@@ -35,15 +37,16 @@ struct ParticleStore {
   // Hot state, one entry per particle.
   std::vector<Vec2> position, velocity, force;
   std::vector<double> angle, spin, torque;
-  std::vector<double> cosAngle, sinAngle;  // of angle, kept current for polygons only
+  std::vector<double> cosAngle, sinAngle;  // of angle, kept current for polygons and clumps only
   std::vector<double> invMass, invInertia;  // 0 for particles that forces do not move
   // Cold data.
   std::vector<double> mass, inertia, boundingRadius;
   std::vector<ShapeKind> shape;
   std::vector<Motion> motion;
   std::vector<unsigned char> boundary;
-  std::vector<int> shapeIndex;  // index into polygons, or -1 for discs
+  std::vector<int> shapeIndex;  // index into polygons or clumps (by shape), or -1 for discs
   std::vector<Polygon> polygons;  // body frame
+  std::vector<Clump> clumps;      // body frame
   std::vector<Wall> walls;
 };
 

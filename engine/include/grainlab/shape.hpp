@@ -1,5 +1,6 @@
 #pragma once
-// Particle shapes: discs and convex polygons (3 to 8 vertices, Box2D's limit).
+// Particle shapes: discs, convex polygons (3 to 8 vertices, Box2D's limit) and clumps of
+// discs (grainlab/clump.hpp).
 #include <array>
 #include <span>
 #include <vector>
@@ -8,7 +9,7 @@
 
 namespace grainlab {
 
-enum class ShapeKind : unsigned char { Disc = 0, Polygon = 1 };
+enum class ShapeKind : unsigned char { Disc = 0, Polygon = 1, Clump = 2 };
 
 inline constexpr int kMaxPolygonVertices = 8;
 

@@ -1,5 +1,6 @@
 #pragma once
-// Specimen generation: the paper's assemblies of discs or elongated convex polygons, placed
+// Specimen generation: the paper's assemblies of discs, elongated convex polygons or clumps of
+// discs in a line, placed
 // at random without overlap inside a circle and enclosed by a ring of boundary particles.
 #include <cstdint>
 #include <optional>
@@ -13,16 +14,19 @@
 namespace grainlab {
 
 struct SpecimenRecipe {
-  enum class Shape { Disc, Elongated };
+  enum class Shape { Disc, Elongated, Clump };
   enum class Orientation { Random, Bedding };
 
   Shape shape = Shape::Disc;
   double discRadius = 0.002;                 ///< m, discs
-  /// Elongated polygons: long-axis lengths L (m) and their fractions by count.
+  /// Elongated polygons and clumps: long-axis lengths L (m) and their fractions by count.
   std::vector<double> longAxes{0.0045, 0.0050, 0.0070};
   std::vector<double> countFractions;        ///< empty: chosen to meet the paper's grading
-  double aspectRatio = 1.5;                  ///< long / short axis of the circumscribing ellipse
+  /// Polygons: long / short axis of the circumscribing ellipse. Clumps: long axis / width
+  /// (the member discs' diameter), below clump_discs so that neighbours overlap.
+  double aspectRatio = 1.5;
   int vertices = 6;                          ///< 3..8
+  int clumpDiscs = 3;                        ///< 2..8 equal discs along the long axis (clumps)
   Orientation orientation = Orientation::Random;
   double beddingAngle = 0;                   ///< rad, long axes at this angle (Bedding)
   double specimenDiameter = 0.160;           ///< m, the consolidated specimen's target size

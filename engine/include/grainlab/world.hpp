@@ -129,6 +129,11 @@ class World {
   /// Solid area of particle i, m².
   double area(int i) const { return particles_.area(i); }
   bool hasPolygons() const { return !particles_.polygons.empty(); }
+  /// The body-frame clump of particle i (which must be a clump): its discs about its centroid.
+  const Clump& clump(int i) const { return particles_.clumpOf(i); }
+  bool hasClumps() const { return !particles_.clumps.empty(); }
+  /// World-frame member discs of clump particle i.
+  void worldMembers(int i, std::vector<ClumpMember>& out) const;
   /// World-frame vertices of polygon particle i.
   void worldVertices(int i, std::vector<Vec2>& out) const;
 

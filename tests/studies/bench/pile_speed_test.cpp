@@ -27,7 +27,7 @@ TEST(PileSpeed, MedianOfOddAndEvenRepeats) {
 
 TEST(PileSpeed, TheGeneralPathPileIsTheDiscPileAndOnePolygon) {
   const std::vector<Scene> piles = benchPiles();
-  ASSERT_EQ(piles.size(), 4u);
+  ASSERT_EQ(piles.size(), 5u);
   EXPECT_EQ(piles[1].name, "disc-pile+1poly");
   EXPECT_EQ(piles[1].particles.size(), piles[0].particles.size() + 1);
   EXPECT_EQ(piles[1].particles.back().shape, ShapeKind::Polygon);
@@ -35,11 +35,19 @@ TEST(PileSpeed, TheGeneralPathPileIsTheDiscPileAndOnePolygon) {
 
 TEST(PileSpeed, TheRollingPileIsTheDiscPileWithRollingResistance) {
   const std::vector<Scene> piles = benchPiles();
-  ASSERT_EQ(piles.size(), 4u);
+  ASSERT_EQ(piles.size(), 5u);
   EXPECT_EQ(piles[3].name, "disc-pile-rolling");
   EXPECT_EQ(piles[3].particles.size(), piles[0].particles.size());
   EXPECT_EQ(piles[0].material.rollingFriction, 0.0);
   EXPECT_GT(piles[3].material.rollingFriction, 0.0);
+}
+
+TEST(PileSpeed, TheClumpPileHasOneThreeDiscClumpPerDisc) {
+  const std::vector<Scene> piles = benchPiles();
+  ASSERT_EQ(piles.size(), 5u);
+  EXPECT_EQ(piles[4].name, "clump-pile");
+  EXPECT_EQ(piles[4].particles.size(), piles[0].particles.size());
+  EXPECT_EQ(piles[4].particles.back().members.size(), 3u);
 }
 
 }  // namespace

@@ -41,9 +41,10 @@ struct Box {
 };
 
 void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const ExportOptions& options) {
-  int polygons = 0, boundary = 0, held = 0;
+  int polygons = 0, clumps = 0, boundary = 0, held = 0;
   for (std::size_t k = 0; k < s.shapes.size(); ++k) {
-    polygons += s.shapes[k] != ShapeKind::Disc;
+    polygons += s.shapes[k] == ShapeKind::Polygon;
+    clumps += s.shapes[k] == ShapeKind::Clump;
     boundary += s.boundary[k] != 0;
     held += s.motions[k] != Motion::Dynamic && !s.boundary[k];
   }
@@ -53,6 +54,9 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
   if (polygons > 0)
     throw ExportRefused(std::to_string(polygons) +
                         " polygon particles: pair_style gran/hooke/history has discs only");
+  if (clumps > 0)
+    throw ExportRefused(std::to_string(clumps) +
+                        " clump particles: the export writes single discs, not rigid bodies of several");
   if (held > 0)
     throw ExportRefused(std::to_string(held) + " fixed or kinematic particles (particles[].motion)");
   if (s.material.rollingFriction > 0)

@@ -37,7 +37,7 @@ std::vector<Scene> benchPiles() {
   rolling.name = "disc-pile-rolling";
   rolling.material.rollingFriction = 0.1;
   rolling.material.rollingDamping = 0.3;
-  return {pileScene(50, 50, false), general, pileScene(50, 50, true), rolling};
+  return {pileScene(50, 50, false), general, pileScene(50, 50, true), rolling, clumpPileScene(50, 50)};
 }
 
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,

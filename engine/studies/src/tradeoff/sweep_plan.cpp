@@ -157,7 +157,9 @@ double strainRateFor(const json& sceneJson, double inertialNumber) {
   double diameters = 0;
   for (int k = 0; k < specimen.specimenCount; ++k) {
     const ParticleSpec& p = specimen.particles[static_cast<size_t>(k)];
-    const double area = p.shape == ShapeKind::Disc ? discArea(p.radius) : makePolygon(p.vertices).area;
+    const double area = p.shape == ShapeKind::Disc      ? discArea(p.radius)
+                        : p.shape == ShapeKind::Clump ? makeClump(p.members).area
+                                                      : makePolygon(p.vertices).area;
     diameters += 2 * std::sqrt(area / kPi);
   }
   const double d = diameters / specimen.specimenCount;
