@@ -9,8 +9,10 @@
 #include <type_traits>
 
 #include "contact_law.hpp"
+#include "disc_pair_kernel.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "simd_path.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -262,6 +264,59 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   else finish(0, particles_.size());
 }
 
+template <class Law>
+void ContactSolver::widePairForces(const Law& law, double dt) {
+  if (discBatchStale_) {
+    discBatch_.build(neighbors_, particles_.size());
+    discBatchStale_ = false;
+  }
+  DiscPairBatch& b = discBatch_;
+  std::vector<PairState>& pairs = neighbors_.pairs();
+  const DiscPairKernelInput in{
+      particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
+      particles_.boundingRadius.data(), b.i(), b.j(), b.state(), b.dampN(), b.dampT(), b.slots(),
+      reinterpret_cast<double*>(pairs.data()), material_.normalStiffness, material_.tangentialStiffness,
+      material_.friction, dt, std::is_same_v<decltype(law.tangential), CundallStrack>, b.endFx(), b.endFy(),
+      b.endTorque(), b.endStride()};
+  const int blocks = b.paddedSlots() / kDiscPairBlock;
+  const int wallPairs = static_cast<int>(b.wallPairs().size());
+  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as today).
+  auto work = [&](int begin, int end) {
+    if (const int last = std::min(end, blocks); begin < last) discPairForces(in, begin * kDiscPairBlock, last * kDiscPairBlock);
+    const Vec2* x = particles_.position.data();
+    const double* radius = particles_.boundingRadius.data();
+    for (int w = std::max(begin, blocks) - blocks; w < end - blocks; ++w) {
+      PairState& p = pairs[static_cast<size_t>(b.wallPairs()[static_cast<size_t>(w)])];
+      const int slot = b.wallSlot(w);
+      const DiscContact c = touchDiscWall(x[p.i], radius[p.i], particles_.walls[static_cast<size_t>(-1 - p.j)]);
+      if (c.overlap <= 0) {
+        clearContact(p);
+        b.endFx()[slot] = b.endFy()[slot] = b.endTorque()[slot] = -0.0;
+        continue;
+      }
+      Vec2 F;
+      double ti, tj;
+      contactForce(p, c, law, dt, F, ti, tj);
+      b.endFx()[slot] = -F.x();
+      b.endFy()[slot] = -F.y();
+      b.endTorque()[slot] = -ti;
+    }
+  };
+  if (pool_) pool_->parallelFor(blocks + wallPairs, work);
+  else work(0, blocks + wallPairs);
+  // Each particle's ends in pair order, then its local damping.
+  Vec2* f = particles_.force.data();
+  double* tau = particles_.torque.data();
+  auto finish = [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      b.addEnds(k, f[k], tau[k]);
+      if (material_.localDamping > 0) applyLocalDamping(k);
+    }
+  };
+  if (pool_) pool_->parallelFor(particles_.size(), finish);
+  else finish(0, particles_.size());
+}
+
 // Which pair ends the parallel force loop adds at once and which wait, for the current pair
 // list and number of threads. Particle k belongs to the slice holding its first pair; a share
 // computed in any other slice (a later one: pairs are in order) gets a slot.
@@ -330,18 +385,22 @@ void ContactSolver::computeForces(double dt, bool moved) {
     if (polygons) carryPolygonCache();
     ++profile_.rebuilds;
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    discBatchStale_ = true;
   }
   auto t1 = Clock::now();
+  const bool wide = !polygons && simdPath() == SimdPath::Wide;
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
   // polygon code, a frictionless one keeps no tangential history.
   const LinearSpringDashpot normal{material_.normalStiffness};
   if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
-    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+    if (wide) widePairForces(law, dt);
+    else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   } else {
     const ContactLaw<LinearSpringDashpot, CundallStrack> law{
         normal, {material_.tangentialStiffness, material_.friction}};
-    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+    if (wide) widePairForces(law, dt);
+    else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   }
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
@@ -441,6 +500,7 @@ void ContactSolver::persist(StateArchive& a) {
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    discBatchStale_ = true;
   }
 }
 

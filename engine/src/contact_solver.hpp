@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact_geometry.hpp"
+#include "disc_pair_batch.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
@@ -57,6 +58,10 @@ class ContactSolver {
   void applyLocalDamping(int k);
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law, double dt);
+  // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
+  // each particle sums its pair ends in pair order.
+  template <class Law>
+  void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, class Force, class Apart>
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
   template <class Law>
@@ -91,6 +96,9 @@ class ContactSolver {
   // by whether the scene has polygons).
   std::vector<TouchingDiscs> touchingDiscs_;
   std::vector<TouchingShapes> touchingShapes_;
+  // The wide path's layout of the pairs, rebuilt when the list is.
+  DiscPairBatch discBatch_;
+  bool discBatchStale_ = true;
 };
 
 }  // namespace grainlab

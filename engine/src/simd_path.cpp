@@ -1,0 +1,38 @@
+#include "simd_path.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "disc_pair_kernel.hpp"
+
+namespace grainlab {
+namespace {
+
+SimdPath readPath() {
+  const char* value = std::getenv("GRAINLAB_SIMD");
+  const std::string v = value ? value : "";
+  if (!v.empty() && v != "baseline" && v != "wide") {
+    throw std::invalid_argument("GRAINLAB_SIMD: \"" + v + "\" is not a path (baseline or wide)");
+  }
+#ifdef GRAINLAB_HAS_WIDE_SIMD
+  return v == "baseline" ? SimdPath::Baseline : SimdPath::Wide;
+#else
+  return SimdPath::Baseline;  // this build has no wide path
+#endif
+}
+
+}  // namespace
+
+SimdPath simdPath() {
+  static const SimdPath path = readPath();
+  return path;
+}
+
+std::string simdTargetName() {
+#ifdef GRAINLAB_HAS_WIDE_SIMD
+  if (simdPath() == SimdPath::Wide) return discPairKernelTarget();
+#endif
+  return "baseline";
+}
+
+}  // namespace grainlab
