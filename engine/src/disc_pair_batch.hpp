@@ -18,7 +18,8 @@ class DiscPairBatch {
   void build(const NeighborList& list, int particles);
   /// Where the kernel reads and writes; the particles' arrays and the law are the caller's.
   int slots() const { return slots_; }
-  int paddedSlots() const { return static_cast<int>(i_.size()); }
+  int paddedSlots() const { return padded_; }
+  int paddingSlot() const { return padded_; }
   const std::int64_t* i() const { return i_.data(); }
   const std::int64_t* j() const { return j_.data(); }
   const std::int64_t* state() const { return state_.data(); }
@@ -28,26 +29,35 @@ class DiscPairBatch {
   double* endFy() { return endFy_.data(); }
   double* endTorque() { return endTorque_.data(); }
   int endStride() const { return endStride_; }
+  std::int64_t* touchList() { return touchList_.data(); }
+  double* scratch(int k) { return scratch_[static_cast<size_t>(k)].data(); }
   /// The disc-wall pairs (their indices in the list), and the slot of wall pair w's i end.
   const std::vector<int>& wallPairs() const { return wallPairs_; }
   int wallSlot(int w) const { return paddedSlots() + w; }
   /// Adds particle k's ends, in pair order, to its force and torque.
   void addEnds(int k, Vec2& force, double& torque) const {
+    // In locals: the sums stay in registers instead of going through memory at each end.
+    double fx = force.x(), fy = force.y(), t = torque;
     for (int e = endStart_[k]; e < endStart_[k + 1]; ++e) {
-      const int at = ends_[static_cast<size_t>(e)];
-      force.x() += endFx_[static_cast<size_t>(at)];
-      force.y() += endFy_[static_cast<size_t>(at)];
-      torque += endTorque_[static_cast<size_t>(at)];
+      const size_t at = static_cast<size_t>(ends_[static_cast<size_t>(e)]);
+      fx += endFx_[at];
+      fy += endFy_[at];
+      t += endTorque_[at];
     }
+    force = Vec2(fx, fy);
+    torque = t;
   }
 
  private:
   int slots_ = 0;
+  int padded_ = 0;  // slots in whole blocks
   std::vector<std::int64_t> i_, j_, state_;
   std::vector<double> dampN_, dampT_;
   std::vector<int> wallPairs_;
   int endStride_ = 0;                            // slots including padding and wall pairs
   std::vector<double> endFx_, endFy_, endTorque_;  // i ends at [slot], j ends at [endStride_ + slot]
+  std::vector<std::int64_t> touchList_;          // the kernel's scratch
+  std::vector<double> scratch_[5];
   std::vector<int> endStart_, ends_;             // particle k's ends: [endStart_[k], endStart_[k+1])
 };
 

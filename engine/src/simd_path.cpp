@@ -21,12 +21,19 @@ SimdPath readPath() {
 #endif
 }
 
+std::optional<SimdPath> overridden;
+
 }  // namespace
 
 SimdPath simdPath() {
   static const SimdPath path = readPath();
+#ifdef GRAINLAB_HAS_WIDE_SIMD
+  if (overridden) return *overridden;
+#endif
   return path;
 }
+
+void overrideSimdPath(std::optional<SimdPath> path) { overridden = path; }
 
 std::string simdTargetName() {
 #ifdef GRAINLAB_HAS_WIDE_SIMD

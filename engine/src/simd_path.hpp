@@ -3,6 +3,7 @@
 // x86-64 runs; the wide path evaluates batches of contacts several per instruction, on the
 // widest instruction set this CPU has (chosen at run time, so one binary runs anywhere).
 // GRAINLAB_SIMD=baseline (or a build with GRAINLAB_SIMD=OFF) forces the baseline.
+#include <optional>
 #include <string>
 
 namespace grainlab {
@@ -13,6 +14,9 @@ enum class SimdPath { Baseline, Wide };
 /// means wide where the build has it). Throws std::invalid_argument naming the variable for
 /// any other value.
 SimdPath simdPath();
+/// Tests only: simdPath() returns `path` from now on (std::nullopt: GRAINLAB_SIMD's again).
+/// A build without the wide path stays on the baseline.
+void overrideSimdPath(std::optional<SimdPath> path);
 /// The instruction set the wide path runs on this CPU (e.g. "AVX2"), or "baseline".
 std::string simdTargetName();
 
