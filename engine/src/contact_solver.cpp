@@ -274,11 +274,10 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   std::vector<PairState>& pairs = neighbors_.pairs();
   const DiscPairKernelInput in{
       particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
-      particles_.boundingRadius.data(), b.i(), b.j(), b.state(), b.dampN(), b.dampT(), b.slots(), b.paddingSlot(),
+      particles_.boundingRadius.data(), b.i(), b.j(), b.state(), b.dampN(), b.dampT(), b.slots(),
       reinterpret_cast<double*>(pairs.data()), material_.normalStiffness, material_.tangentialStiffness,
       material_.friction, dt, std::is_same_v<decltype(law.tangential), CundallStrack>, b.endFx(), b.endFy(),
-      b.endTorque(), b.endStride(), b.touchList(), b.scratch(0), b.scratch(1), b.scratch(2), b.scratch(3),
-      b.scratch(4)};
+      b.endTorque(), b.endStride()};
   const int blocks = b.paddedSlots() / kDiscPairBlock;
   const int wallPairs = static_cast<int>(b.wallPairs().size());
   // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as today).

@@ -37,16 +37,12 @@ void DiscPairBatch::build(const NeighborList& list, int particles) {
   slots_ = static_cast<int>(i_.size());
   // Padding to whole blocks: i = j = 0 is a pair at zero distance, which never touches.
   const size_t padded = (i_.size() + kDiscPairBlock - 1) / kDiscPairBlock * kDiscPairBlock;
-  // One more: paddingSlot(), which fills the kernel's last packed vector and which no block
-  // writes, so threads may all read it.
   padded_ = static_cast<int>(padded);
-  i_.resize(padded + 1, 0);
-  j_.resize(padded + 1, 0);
-  state_.resize(padded + 1, 0);
-  dampN_.resize(padded + 1, 0);
-  dampT_.resize(padded + 1, 0);
-  touchList_.resize(2 * padded);
-  for (std::vector<double>& v : scratch_) v.assign(padded + 1, 0.0);
+  i_.resize(padded, 0);
+  j_.resize(padded, 0);
+  state_.resize(padded, 0);
+  dampN_.resize(padded, 0);
+  dampT_.resize(padded, 0);
   for (size_t w = 0; w < wallPairs_.size(); ++w) slotOfPair[static_cast<size_t>(wallPairs_[w])] = wallSlot(static_cast<int>(w));
   endStride_ = static_cast<int>(padded + wallPairs_.size());
   endFx_.assign(2 * static_cast<size_t>(endStride_), -0.0);

@@ -19,7 +19,6 @@ class DiscPairBatch {
   /// Where the kernel reads and writes; the particles' arrays and the law are the caller's.
   int slots() const { return slots_; }
   int paddedSlots() const { return padded_; }
-  int paddingSlot() const { return padded_; }
   const std::int64_t* i() const { return i_.data(); }
   const std::int64_t* j() const { return j_.data(); }
   const std::int64_t* state() const { return state_.data(); }
@@ -29,8 +28,6 @@ class DiscPairBatch {
   double* endFy() { return endFy_.data(); }
   double* endTorque() { return endTorque_.data(); }
   int endStride() const { return endStride_; }
-  std::int64_t* touchList() { return touchList_.data(); }
-  double* scratch(int k) { return scratch_[static_cast<size_t>(k)].data(); }
   /// The disc-wall pairs (their indices in the list), and the slot of wall pair w's i end.
   const std::vector<int>& wallPairs() const { return wallPairs_; }
   int wallSlot(int w) const { return paddedSlots() + w; }
@@ -56,8 +53,6 @@ class DiscPairBatch {
   std::vector<int> wallPairs_;
   int endStride_ = 0;                            // slots including padding and wall pairs
   std::vector<double> endFx_, endFy_, endTorque_;  // i ends at [slot], j ends at [endStride_ + slot]
-  std::vector<std::int64_t> touchList_;          // the kernel's scratch
-  std::vector<double> scratch_[5];
   std::vector<int> endStart_, ends_;             // particle k's ends: [endStart_[k], endStart_[k+1])
 };
 

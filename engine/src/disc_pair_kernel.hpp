@@ -28,7 +28,6 @@ struct DiscPairKernelInput {
   const double* dampN;
   const double* dampT;
   int slots;                  // real slots (the rest of the last block is padding)
-  int paddingSlot;            // a padding slot (there is always one)
   double* pairState;          // the neighbour list's pairs viewed as doubles
   // Law.
   double normalStiffness, tangentialStiffness, friction, dt;
@@ -39,9 +38,6 @@ struct DiscPairKernelInput {
   double* endFy;
   double* endTorque;
   int endStride;
-  // Scratch, one entry per slot: the pairs that may touch, packed, and their geometry.
-  std::int64_t* touchList;
-  double *dx, *dy, *dist2, *ri, *rj;
 };
 
 /// Evaluates slots [begin, end) (block multiples): writes each pair's history, fn, ft and
