@@ -16,14 +16,21 @@ int checkCommand(const std::vector<std::string>& args) {
   }
   const nlohmann::json json = preset ? presetScene(args[1]) : loadSceneJson(args[0]);
   const Scene scene = parseScene(json);  // a SceneError names the field (main prints it)
-  // The cost's hard limit is grainlab run's (without --force).
+  // The cost's hard limit is grainlab run's (without --force). A start_from is read as
+  // grainlab run reads it: a specimen that is missing or does not fit is a SceneError by
+  // field, and only the stages run on it are counted.
   const ValidityAssessment validity = assessSceneValidity(scene, 30 * 86400.0);
   if (!validity.refusals.empty()) {
     std::cerr << "error: " << validity.refusalMessage() << "\n";
     return 2;
   }
   for (const ValidityWarning& w : validity.warnings) std::cout << describe(w) << "\n";
-  std::cout << "ok: " << scene.stages.size() << " stages; " << validity.cost.describe() << "\n";
+  const std::size_t first = validity.cost.firstStage;
+  std::cout << "ok: " << scene.stages.size() << " stages";
+  if (first > 0)
+    std::cout << ", " << scene.stages.size() - first << " of them run on the prepared specimen (the end of stage '"
+              << scene.stages[first - 1].name << "')";
+  std::cout << "; " << validity.cost.describe() << "\n";
   return 0;
 }
 

@@ -14,6 +14,7 @@
 #include "grainlab/run.hpp"
 #include "grainlab/scene.hpp"
 #include "bench_command.hpp"
+#include "lammps_command.hpp"
 #include "run_command.hpp"
 #include "scene_keys_command.hpp"
 #include "paper_command.hpp"
@@ -53,6 +54,7 @@ int usage(std::ostream& out, int code) {
          "  sweep SPEC.json --out DIR [--jobs N]  every run of a parameter sweep (also under mpirun)\n"
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"         "      [--seeds N]              N seeds per setting, paired on specimens prepared once:\n"
          "                               each setting's bias with its 95% interval and a verdict\n"
+         "      [--presets A,B] [--axes A,B]  other presets; only some axes (e.g. inertial_number)\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
@@ -63,6 +65,13 @@ int usage(std::ostream& out, int code) {
          "                               the HTTP/WebSocket server and dashboard (docs/security.md)\n"
          "  import DIR [--db FILE]       a sweep folder's runs into the server's database\n"
 #endif
+         "  export lammps (SCENE.json | --preset NAME) [--from RUN_DIR[:STAGE]] --out DIR\n"
+         "        [--periodic] [--deform EXX,EYY[,GXY]] [--steps N] [--dump-every N] [--without-local-damping]\n"
+         "                               a disc specimen and its run as a LAMMPS data file and input script\n"
+         "  import lammps DUMPS... --out DIR [--timestep S] [--frames-every N] [--local-columns ROLE=COL,...]\n"
+         "        [--db FILE [--name NAME]]\n"
+         "                               a LAMMPS run's dump custom and dump local frames into grainlab's outputs\n"
+         "                               (and, with --db, into the server's database as a run of origin lammps)\n"
          "  help                         this text\n";
   return code;
 }
@@ -149,6 +158,10 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return grainlab::runCommand(args);
+    if (command == "export" && !args.empty() && args[0] == "lammps")
+      return grainlab::exportLammpsCommand({args.begin() + 1, args.end()});
+    if (command == "import" && !args.empty() && args[0] == "lammps")
+      return grainlab::importLammpsCommand({args.begin() + 1, args.end()});
     if (command == "resume") return grainlab::resumeCommand(args);
     if (command == "columns") return grainlab::columnsCommand(args);
     if (command == "scene-keys") return grainlab::sceneKeysCommand(args);

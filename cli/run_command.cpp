@@ -9,6 +9,7 @@
 #include "grainlab/run.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/scene.hpp"
+#include "grainlab/world.hpp"
 
 namespace grainlab {
 namespace {
@@ -31,6 +32,11 @@ class CliRunOutput : public RunOutput {
  public:
   using RunOutput::RunOutput;
   bool stopRequested() override { return stopSignals > 0 || RunOutput::stopRequested(); }
+  // Said before the run goes on, so a resume that started afresh (step 0) shows at once.
+  void onResume(const Scene& scene, const World& world) override {
+    RunOutput::onResume(scene, world);
+    std::cerr << "resumed from step " << world.stepCount() << " at t = " << world.time() << " s\n";
+  }
 };
 
 std::string checkpointPath(const std::string& dir) { return (fs::path(dir) / "checkpoint.bin").string(); }

@@ -61,6 +61,7 @@ int tradeoffCommand(const std::vector<std::string>& args) {
     else if (args[k] == "--quick") opt.quick = true;
     else if (args[k] == "--jobs" && value) opt.jobs = static_cast<unsigned>(std::stoul(args[++k]));
     else if (args[k] == "--presets" && value) opt.presets = splitList(args[++k]);
+    else if (args[k] == "--axes" && value) opt.axes = splitList(args[++k]);
     else if (args[k] == "--seeds" && value) opt.seeds = std::stoi(args[++k]);
     else if (args[k] == "--cost" && value && (args[k + 1] == "cpu" || args[k + 1] == "wall")) opt.cost = args[++k];
     else {

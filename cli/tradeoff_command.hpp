@@ -1,5 +1,5 @@
 #pragma once
-// `grainlab tradeoff --out DIR [--quick] [--jobs N] [--presets A,B] [--cost cpu|wall]`:
+// `grainlab tradeoff --out DIR [--quick] [--jobs N] [--presets A,B] [--axes A,B] [--cost cpu|wall]`:
 // speed against accuracy.
 // Sweeps timestep safety, shearing inertial number, polygon vertex count, sampling interval
 // (and the engine, where the parser takes "box2d") on quick presets; measures each run's

@@ -2,7 +2,6 @@
 # what it found, must be registered with ctest, so an area cannot drop out silently; an area
 # configured out (or whose tools were not found) is listed in the test's output and at
 # configure time. Included last from the top-level CMakeLists.txt, when every area is known.
-# There are no LAMMPS tests (the Python analysis reads LAMMPS-style dumps, without LAMMPS).
 set(areas)
 set(left_out)
 
@@ -29,6 +28,13 @@ endif()
 # MPI: the sweep under mpirun (tests/studies). Without MPI that test fails on its own.
 if(GRAINLAB_HAS_MPI)
   list(APPEND areas "expect=mpi=MPI was found")
+endif()
+
+# LAMMPS: the export/import round trip through Debian's lmp (tests/lammps).
+if(GRAINLAB_LMP)
+  list(APPEND areas "expect=lammps=LAMMPS was found (${GRAINLAB_LMP})")
+else()
+  list(APPEND left_out "LAMMPS round trip: no lmp found (./scripts/setup installs lammps)")
 endif()
 
 # Python: the module's tests (python/, tests/python).

@@ -89,10 +89,11 @@ MEANINGS = {
     "output.vtk_every": ("", "a frame at every vtk_every-th sample (and at the end)"),
     "output.checkpoint_every_s": ("s", "wall time between checkpoints of runs that keep them"),
     "output.stage_checkpoints": ("", "keep the state at each stage's end in DIR/stages/, to start other runs from (default: on with dem, off with box2d; docs/prepared-specimens.md)"),
-    "start_from": ("", "start from a prepared specimen instead of preparing one: give `run` with `stage`, or `checkpoint` (docs/prepared-specimens.md)"),
+    "start_from": ("", "start from a prepared specimen instead of preparing one: give `run` with `stage`, or `checkpoint`, or for `grainlab serve` `run_id` with `stage` (docs/prepared-specimens.md)"),
     "start_from.run": ("", "the directory of a run that kept its stages' ends"),
     "start_from.stage": ("", "the stage whose end to start from; the scene's stages up to it are skipped"),
     "start_from.checkpoint": ("", "a stage checkpoint file itself (instead of `run` and `stage`)"),
+    "start_from.run_id": ("", "a run stored by `grainlab serve` (its id), whose end of `stage` the server starts from; only the server resolves it (docs/http-api.md)"),
 }
 
 

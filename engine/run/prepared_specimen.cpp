@@ -92,7 +92,7 @@ void checkFits(const SpecimenIdentity& saved, const SpecimenIdentity& scene, con
     refuse("the specimen was prepared with another material (density, stiffnesses, restitution or damping) than this "
            "scene's");
   }
-  const std::string stageField = field == "start_from.run" ? "start_from.stage" : field;
+  const std::string stageField = field == "start_from.checkpoint" ? field : "start_from.stage";
   const std::size_t k = static_cast<std::size_t>(saved.stageIndex);
   if (k >= s.stages.size() || s.stages[k].name != saved.stageName ||
       static_cast<std::uint32_t>(s.stages[k].type) != saved.stageType) {
@@ -105,7 +105,11 @@ void checkFits(const SpecimenIdentity& saved, const SpecimenIdentity& scene, con
   }
 }
 
-std::string fieldOf(const StartFrom& from) { return from.checkpoint.empty() ? "start_from.run" : "start_from.checkpoint"; }
+// A run_id the server resolved to a checkpoint is still reported as the run_id the user gave.
+std::string fieldOf(const StartFrom& from) {
+  if (from.runId != 0) return "start_from.run_id";
+  return from.checkpoint.empty() ? "start_from.run" : "start_from.checkpoint";
+}
 
 }  // namespace
 
@@ -127,8 +131,13 @@ bool keepsStageCheckpoints(const Scene& scene) {
 std::string startFromPath(const Scene& scene) {
   const StartFrom& from = *scene.startFrom;
   if (!from.checkpoint.empty()) {
-    if (!fs::is_regular_file(from.checkpoint)) throw SceneError("start_from.checkpoint", from.checkpoint + ": no such file");
+    if (!fs::is_regular_file(from.checkpoint)) throw SceneError(fieldOf(from), from.checkpoint + ": no such file");
     return from.checkpoint;
+  }
+  if (from.runId != 0) {
+    throw SceneError("start_from.run_id", "names a run stored by grainlab serve, which only that server can start "
+                                          "from; here give start_from.run (a run's directory) or "
+                                          "start_from.checkpoint");
   }
   if (!fs::is_directory(from.run)) throw SceneError("start_from.run", from.run + ": no such run directory");
   std::string stage = from.stage;

@@ -11,13 +11,16 @@
 namespace grainlab {
 namespace {
 
-// One thread's particle-steps per second by kind of scene, rounded down from the benchmarks
-// and the presets' runs (docs/benchmarks.md, docs/polygon-contacts.md, 2026-11-25): discs
-// 30-50 M, polygons 7-17 M, Box2D's rigid bodies about 1 M. An estimate's order of magnitude
-// is what matters here; the progress line's time left is measured as the run goes.
-constexpr double kDiscSpeed = 20e6;
-constexpr double kPolygonSpeed = 6e6;
-constexpr double kRigidSpeed = 0.7e6;
+// One thread's particle-steps per second by kind of scene, the fastest and the slowest a run
+// of that kind may step, so that the seconds below are bounds and not guesses. Measured on
+// every preset (docs/run-times.md, commit f2feb20, a 2-core Xeon): discs 35-66 M, polygons
+// 9.1-19.8 M; Box2D's rigid bodies about 1 M (docs/speed-accuracy.md). The fastest is the
+// measured maximum with 50 % to spare (a faster machine or a faster step), the slowest the
+// minimum less 20 %: a lower bound on a run's time must not be beaten, and the "at most" must
+// not be exceeded, on the machines this runs on.
+constexpr double kDiscFastest = 100e6, kDiscSlowest = 28e6;
+constexpr double kPolygonFastest = 30e6, kPolygonSlowest = 7e6;
+constexpr double kRigidFastest = 2e6, kRigidSlowest = 0.5e6;
 // A timestep below this is itself the problem (the presets step at about 1e-6 s).
 constexpr double kTinyTimestep = 1e-9;
 
@@ -25,16 +28,17 @@ std::string stagePath(size_t k, const char* field) { return "stages." + std::to_
 
 }  // namespace
 
-RunCost estimateRunCost(const Scene& scene, const World& world) {
+RunCost estimateRunCost(const Scene& scene, const World& world, std::size_t firstStage) {
   RunCost cost;
   cost.timestep = world.timestep();
+  cost.firstStage = firstStage;
   cost.particles = world.size();
-  cost.particleStepsPerSecond = scene.solver.engine == SolverSpec::Engine::Box2d ? kRigidSpeed
-                                : world.hasPolygons()                           ? kPolygonSpeed
-                                                                                : kDiscSpeed;
+  const bool rigid = scene.solver.engine == SolverSpec::Engine::Box2d, polygons = world.hasPolygons();
+  cost.fastestParticleStepsPerSecond = rigid ? kRigidFastest : polygons ? kPolygonFastest : kDiscFastest;
+  cost.slowestParticleStepsPerSecond = rigid ? kRigidSlowest : polygons ? kPolygonSlowest : kDiscSlowest;
   double longest = -1;
   std::string longestField;
-  for (size_t k = 0; k < scene.stages.size(); ++k) {
+  for (size_t k = firstStage; k < scene.stages.size(); ++k) {
     const StageSpec& s = scene.stages[k];
     double time = 0;
     std::string field;
@@ -120,17 +124,17 @@ std::string humanDuration(double seconds) {
 std::string RunCost::describe() const {
   std::ostringstream os;
   os.precision(3);
-  // A lower bound, and said to be one: the stages that end on a criterion (compaction,
-  // consolidation) count for nothing here, and they made up 43-57 % of the steps of the
-  // presets measured (docs/biaxial-test.md, "Wall time": elongated-bedding-30 3.34e5 counted,
-  // 597,370 run; circular-quick 8.22e4 counted, 181,351 run). The wall times assume one idle
-  // core; a loaded machine is slower.
+  // Bounds, and said to be: the steps counted are those of the stages whose length is known
+  // (the criterion stages, compaction and consolidation, made up 43-57 % of the presets'
+  // steps, docs/run-times.md), and the seconds take the fastest rate a run of this kind steps
+  // at. The "at most" counts every stage to its time limit at the slowest rate.
   os << "timestep " << timestep << " s, " << particles << " particles: lower bound " << certainSteps()
-     << " steps, about " << humanDuration(certainSeconds()) << " at " << particleStepsPerSecond / 1e6
-     << " M particle-steps/s on one idle core";
+     << " steps, at least " << humanDuration(certainSeconds()) << " on one idle core (at up to "
+     << fastestParticleStepsPerSecond / 1e6 << " M particle-steps/s)";
   if (boundedTime > 0)
     os << "; stages that end on a criterion add more: at most " << (certainTime + boundedTime) / timestep
-       << " steps (about " << humanDuration(mostSeconds()) << ") if every stage runs to its time limit";
+       << " steps (at most " << humanDuration(mostSeconds()) << " at " << slowestParticleStepsPerSecond / 1e6
+       << " M particle-steps/s or faster) if every stage runs to its time limit";
   return os.str();
 }
 

@@ -231,7 +231,8 @@ std::string readNewestCheckpoint(const std::string& path, std::string* note) {
 }  // namespace
 
 Scene checkpointScene(const std::string& path) {
-  StateArchive a(readNewestCheckpoint(path, nullptr));
+  const std::string payload = readNewestCheckpoint(path, nullptr);  // the archive only views it
+  StateArchive a(payload);
   a.section("grainlab run");
   std::string json;
   a(json);
@@ -278,7 +279,7 @@ RunSummary runScene(const Scene& scene, RunObserver& observer, const RunLimits& 
   }
   World& world = context->world();
   summary.particles = world.size();
-  const RunCost cost = estimateRunCost(scene, world);
+  const RunCost cost = estimateRunCost(scene, world, loop.stage);
   observer.onEstimate(cost);
   // The validity envelope: refused past a hard limit, naming the field; warned past a soft one.
   const ValidityAssessment validity = assessValidity(scene, world, cost, std::numeric_limits<double>::infinity());
@@ -339,7 +340,10 @@ RunSummary resumeRun(const std::string& path, RunObserver& observer, const Check
     return summary;
   }
   World& world = context->world();
-  observer.onEstimate(estimateRunCost(scene, world));
+  summary.resumedFromStep = world.stepCount();
+  summary.resumedFromTime = world.time();
+  // The stages still to run, from the one it resumes in (that one counted whole).
+  observer.onEstimate(estimateRunCost(scene, world, loop.stage));
   try {
     observer.onResume(scene, world);
   } catch (const std::exception& e) {

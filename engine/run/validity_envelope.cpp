@@ -9,6 +9,7 @@
 #include "grainlab/validity.hpp"
 #include "validity_format.hpp"
 #include "grainlab/world.hpp"
+#include "prepared_specimen.hpp"
 #include "run_context.hpp"
 #include "validity_reference.hpp"
 
@@ -392,7 +393,14 @@ ValidityAssessment assessSceneValidity(const Scene& scene, double maxSeconds) {
   // What the scene alone decides first: such a scene may not even build.
   if (ValidityAssessment alone = assessSceneAlone(scene); !alone.refusals.empty()) return alone;
   RunContext context(scene);
-  return assessValidity(scene, context.world(), estimateRunCost(scene, context.world()), maxSeconds);
+  // As runScene: a prepared specimen is loaded (one that is missing or does not fit is a
+  // SceneError naming start_from's field) and only the stages after it are counted.
+  std::size_t firstStage = 0;
+  if (scene.startFrom) {
+    PreparedHistory history;
+    firstStage = loadPreparedSpecimen(scene, context, history);
+  }
+  return assessValidity(scene, context.world(), estimateRunCost(scene, context.world(), firstStage), maxSeconds);
 }
 
 std::string likelyCause(const Scene& scene, const World& world) {

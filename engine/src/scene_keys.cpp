@@ -161,6 +161,9 @@ std::vector<std::pair<std::string, json>> sceneKeyExemplars() {
   json fromFile = membraneScene(json::array({{{"type", "isotropic"}}, {{"type", "biaxial"}}}));
   fromFile["start_from"] = {{"checkpoint", "prepared-run/stages/consolidation.checkpoint"}};
   scenes.emplace_back("started from a checkpoint file", fromFile);
+  json fromStored = membraneScene(json::array({{{"type", "isotropic"}, {"name", "consolidation"}}, {{"type", "biaxial"}}}));
+  fromStored["start_from"] = {{"run_id", 7}, {"stage", "consolidation"}};
+  scenes.emplace_back("started from a run stored by grainlab serve", fromStored);
   scenes.emplace_back("elongated assembly, every recipe key",
                       json{{"assembly",
                             {{"shape", "elongated"}, {"disc_radius", 0.002}, {"long_axes", {0.0045, 0.005, 0.007}},

@@ -10,7 +10,8 @@ from ._scene import presets, preset, validate
 from ._run import Run, run
 from ._tables import read_csv
 from ._analysis import stress, anisotropy, theta_sigma, omega, phi_mob
+from ._lammps import read_lammps
 from .client import Client, ServerError
 
 __all__ = ["SceneError", "presets", "preset", "validate", "Run", "run", "read_csv", "stress",
-           "anisotropy", "theta_sigma", "omega", "phi_mob", "Client", "ServerError"]
+           "anisotropy", "theta_sigma", "omega", "phi_mob", "read_lammps", "Client", "ServerError"]

@@ -4,6 +4,7 @@ import json
 import os
 import time
 import urllib.error
+import urllib.parse
 import urllib.request
 
 from ._errors import SceneError
@@ -25,6 +26,8 @@ class Client:
     ``token``: the server's token (the ``token=`` of the login URL ``grainlab serve`` prints),
     sent as ``Authorization: Bearer``; by default the environment variable GRAINLAB_TOKEN, if
     set. A server on loopback started without a token needs none (docs/security.md)."""
+
+    page_size = 1000  # runs per request when runs() walks the whole list
 
     def __init__(self, url="http://127.0.0.1:8080", timeout=30.0, token=None):
         self.url = url.rstrip("/")
@@ -64,9 +67,30 @@ class Client:
     def presets(self):
         return self._json("GET", "/api/presets")["presets"]
 
-    def runs(self):
-        """Every run, newest first, without its scene."""
-        return self._json("GET", "/api/runs")["runs"]
+    def runs(self, status=None, preset=None, study=None, name=None, sort=None, order=None,
+             limit=None, offset=0):
+        """Runs without their scenes, newest first unless ``sort`` (created_at, name, status,
+        preset, wall_seconds, peak_phi_mob_deg) and ``order`` ("asc", "desc") say otherwise,
+        filtered on the server: ``status`` (one or a list), ``preset``, ``study``, ``name`` (part
+        of the name, any case). With ``limit``, one page of at most that many runs from
+        ``offset``; without it every match, asked for ``page_size`` (1,000) at a time so that no
+        answer grows with the database (docs/http-api.md, GET /api/runs)."""
+        query = {"status": ",".join(status) if isinstance(status, (list, tuple)) else status,
+                 "preset": preset, "study": study, "q": name, "sort": sort, "order": order}
+        query = {k: v for k, v in query.items() if v is not None}
+        if limit is not None:
+            return self._runs_page(query, limit, offset)["runs"]
+        runs = []
+        while True:
+            page = self._runs_page(query, self.page_size, offset)
+            runs += page["runs"]
+            if not page.get("next"):
+                return runs
+            offset += len(page["runs"])
+
+    def _runs_page(self, query, limit, offset):
+        query = dict(query, limit=int(limit), offset=int(offset))
+        return self._json("GET", "/api/runs?" + urllib.parse.urlencode(query))
 
     def get(self, run_id):
         """One run: status, progress, stage, timings, peak_phi_mob_deg, error, scene."""

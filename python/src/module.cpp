@@ -10,6 +10,7 @@
 #include "grainlab/analysis/fabric.hpp"
 #include "grainlab/analysis/stress_direction.hpp"
 #include "grainlab/errors.hpp"
+#include "grainlab/lammps/import.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/stress.hpp"
@@ -144,4 +145,22 @@ PYBIND11_MODULE(_grainlab, m) {
   m.def("omega", &analysis::omegaDeg, py::arg("theta_sigma_deg"), py::arg("theta_strain_rate_deg") = 90.0);
   m.def(
       "phi_mob", [](const py::dict& s) { return analysis::phiMobDeg(stressFromDict(s)); }, py::arg("stress"));
+  // grainlab.read_lammps: the same import as `grainlab import lammps` (engine/interop/lammps).
+  m.def(
+      "import_lammps",
+      [](const std::vector<std::string>& dumps, const std::string& out, std::optional<double> timestep,
+         int framesEvery) {
+        lammps::ImportOptions options;
+        options.timestep = timestep;
+        options.framesEvery = framesEvery;
+        lammps::ImportReport r;
+        {
+          py::gil_scoped_release release;
+          r = lammps::importLammps(dumps, out, options);
+        }
+        return py::dict(py::arg("frames") = r.frames, py::arg("first_timestep") = r.firstTimestep,
+                        py::arg("last_timestep") = r.lastTimestep, py::arg("particles") = r.particles,
+                        py::arg("warning") = r.warning);
+      },
+      py::arg("dumps"), py::arg("out"), py::arg("timestep") = py::none(), py::arg("frames_every") = 0);
 }

@@ -30,8 +30,13 @@ T get(const std::string& in, std::size_t at) {
 }  // namespace
 
 std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch) {
-  const auto n = static_cast<std::size_t>(world.size());
   world.contacts(scratch);
+  return encodeFrame(world.stepCount(), world.time(), world.positions(), world.angles(), scratch);
+}
+
+std::string encodeFrame(std::int64_t step, double time, std::span<const Vec2> positions,
+                        std::span<const double> angles, const std::vector<ContactRecord>& contacts) {
+  const auto n = positions.size();
 
   // Colour by the mean contact force magnitude on each particle; walls count for their
   // particle. Drawn chains are the particle-particle contacts in compression.
@@ -39,7 +44,7 @@ std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch)
   std::vector<std::uint16_t> count(n, 0);
   std::size_t chains = 0;
   float maxContact = 0;
-  for (const auto& c : scratch) {
+  for (const auto& c : contacts) {
     const auto magnitude = static_cast<float>(std::hypot(c.fn, c.ft));
     const auto i = static_cast<std::size_t>(c.i);
     if (i < n) {
@@ -69,22 +74,20 @@ std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch)
   at = 4;
   put(out, at, frame::kVersion);
   put(out, at, static_cast<std::uint16_t>(frame::kHeaderBytes));
-  put(out, at, static_cast<std::int64_t>(world.stepCount()));
-  put(out, at, world.time());
+  put(out, at, step);
+  put(out, at, time);
   put(out, at, static_cast<std::uint32_t>(n));
   put(out, at, static_cast<std::uint32_t>(chains));
   put(out, at, maxMean);
   put(out, at, maxContact);
 
-  const auto positions = world.positions();
-  const auto angles = world.angles();
   for (std::size_t i = 0; i < n; ++i) {
     put(out, at, static_cast<float>(positions[i].x()));
     put(out, at, static_cast<float>(positions[i].y()));
     put(out, at, static_cast<float>(angles[i]));
     put(out, at, sum[i]);
   }
-  for (const auto& c : scratch) {
+  for (const auto& c : contacts) {
     if (c.isWall() || static_cast<std::size_t>(c.j) >= n || !(c.fn > 0)) continue;
     put(out, at, static_cast<std::uint32_t>(c.i));
     put(out, at, static_cast<std::uint32_t>(c.j));
@@ -145,8 +148,13 @@ nlohmann::json shapesMessage(const World& world) {
   nlohmann::json walls = nlohmann::json::array();
   for (const auto& w : world.walls())
     walls.push_back({{"point", {w.point.x(), w.point.y()}}, {"normal", {w.normal.x(), w.normal.y()}}});
+  return shapesMessage(std::move(shapes), std::move(boundary), std::move(walls));
+}
+
+nlohmann::json shapesMessage(nlohmann::json shapes, nlohmann::json boundary, nlohmann::json walls) {
+  const auto count = shapes.size();
   return {{"type", "shapes"},
-          {"count", world.size()},
+          {"count", count},
           {"shapes", std::move(shapes)},
           {"boundary", std::move(boundary)},
           {"walls", std::move(walls)}};

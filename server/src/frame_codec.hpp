@@ -1,6 +1,7 @@
 #pragma once
 // The stream's binary particle frame and the static "shapes" message (docs/stream-protocol.md).
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ inline constexpr std::size_t kContactBytes = 12;   ///< u32 i, u32 j, f32 fn
 /// a contact list per frame on the simulation thread.
 std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch);
 
+/// Encodes particles given as arrays (an imported run's frame). A contact whose j is not one of
+/// the particles (a periodic image's index) colours i but draws no chain.
+std::string encodeFrame(std::int64_t step, double time, std::span<const Vec2> positions,
+                        std::span<const double> angles, const std::vector<ContactRecord>& contacts);
+
 /// What a decoder reads back (tests and tools).
 struct DecodedFrame {
   std::int64_t step = 0;
@@ -44,5 +50,7 @@ DecodedFrame decodeFrame(const std::string& bytes);
 /// {"type":"shapes","count":N,"shapes":[{"disc":r} | {"polygon":[x0,y0,x1,y1,...]}],
 ///  "boundary":[indices],"walls":[{"point":[x,y],"normal":[x,y]}]}.
 nlohmann::json shapesMessage(const World& world);
+/// The same message from its parts, for a run that has no World (an imported one).
+nlohmann::json shapesMessage(nlohmann::json shapes, nlohmann::json boundary, nlohmann::json walls);
 
 }  // namespace grainlab::server

@@ -11,6 +11,8 @@
 #include <iostream>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "sqlite.hpp"
 
 namespace grainlab::server {
@@ -73,19 +75,68 @@ constexpr const char* kMigrations[] = {
     "ALTER TABLE runs ADD COLUMN estimated_seconds REAL;",
     // 3 -> 4: the validity envelope's warnings, a JSON array (docs/validity.md).
     "ALTER TABLE runs ADD COLUMN warnings TEXT;",
+    // 4 -> 5: the stored run (and its stage) a run started from: start_from.run_id.
+    "ALTER TABLE runs ADD COLUMN origin_run_id INTEGER; ALTER TABLE runs ADD COLUMN origin_stage TEXT;",
+    // 5 -> 6: the program that produced the run: 'grainlab', or 'lammps' for an imported LAMMPS run.
+    "ALTER TABLE runs ADD COLUMN produced_by TEXT NOT NULL DEFAULT 'grainlab';",
+    // 6 -> 7: the study a run belongs to (the sweep it was imported from), and the indexes that
+    // serve a page of the runs list (RunQuery) without reading every run: one per sort key and
+    // one per filter, each ending in (created_at, id), the order ties are broken in. Walking an index, SQLite reads a run's row only for the runs on the page, so a
+    // deep page skips index entries, not rows (a row holds its scene and shapes, kilobytes).
+    // Runs imported before this are
+    // recognised by what importSweep writes: a "SWEEP/ID" name, started and finished at the
+    // moment they were created.
+    R"sql(
+    ALTER TABLE runs ADD COLUMN study TEXT NOT NULL DEFAULT '';
+    UPDATE runs SET study = substr(name, 1, instr(name, '/') - 1)
+      WHERE instr(name, '/') > 1 AND started_at = created_at AND finished_at = created_at;
+    CREATE INDEX runs_by_created_at ON runs (created_at, id);
+    CREATE INDEX runs_by_status ON runs (status, created_at, id);
+    CREATE INDEX runs_by_preset ON runs (preset, created_at, id);
+    CREATE INDEX runs_by_study ON runs (study, created_at, id);
+    CREATE INDEX runs_by_study_status ON runs (study, status);
+    CREATE INDEX runs_by_name ON runs (name, created_at, id);
+    CREATE INDEX runs_by_wall_seconds ON runs (wall_seconds, created_at, id);
+    CREATE INDEX runs_by_peak_phi_mob_deg ON runs (peak_phi_mob_deg, created_at, id);
+    )sql",
+    // 7 -> 8: studies launched on this server (POST /api/studies): the sweep spec as given, its
+    // runs with the values each was given (JSON), and what was asked of it ('launched' or
+    // 'cancelled'); the runs' own states give its progress. Imported sweeps have no row here.
+    R"sql(
+    CREATE TABLE studies (
+      name        TEXT PRIMARY KEY,
+      spec        TEXT NOT NULL,
+      runs        TEXT NOT NULL,
+      created_at  REAL NOT NULL,
+      status      TEXT NOT NULL
+    );
+    )sql",
 };
 
 // Every statement the server runs, by name.
 namespace sql {
 // The list leaves the scene out (it can be megabytes of particles); readRun sees it empty.
-constexpr const char* kListRuns =
+// listQuery() adds the filters, the order and the page.
+constexpr const char* kListColumns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
-    "FROM runs ORDER BY id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage, study, produced_by FROM runs";
+constexpr const char* kRunIdsNamed = "SELECT id FROM runs WHERE name = :name ORDER BY id";
+// Imported sweeps and how many of their runs stand in each status (runs_by_study_status).
+constexpr const char* kStudyCounts =
+    "SELECT study, status, COUNT(*) FROM runs WHERE study > '' GROUP BY study, status ORDER BY study";
+constexpr const char* kOneStudyCounts =
+    "SELECT study, status, COUNT(*) FROM runs WHERE study = :study GROUP BY study, status";
+constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status FROM studies ORDER BY name";
+constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
+constexpr const char* kInsertStudy =
+    "INSERT INTO studies (name, spec, runs, created_at, status) VALUES (:name, :spec, :runs, :created_at, :status)";
+constexpr const char* kSetStudyStatus = "UPDATE studies SET status = :status WHERE name = :name";
+constexpr const char* kDeleteStudy = "DELETE FROM studies WHERE name = :name";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
-    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings "
-    "FROM runs WHERE id = :id";
+    "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage, study, produced_by FROM runs WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
 constexpr const char* kHistograms =
@@ -102,8 +153,10 @@ constexpr const char* kLastFrame =
 constexpr const char* kShapes = "SELECT shapes FROM runs WHERE id = :id AND shapes IS NOT NULL";
 
 constexpr const char* kInsertRun =
-    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings) "
-    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings)";
+    "INSERT INTO runs (name, preset, scene, status, particles, created_at, estimated_seconds, warnings, "
+    "origin_run_id, origin_stage, study, produced_by) "
+    "VALUES (:name, :preset, :scene, :status, :particles, :created_at, :estimated_seconds, :warnings, "
+    ":origin_run_id, :origin_stage, :study, :produced_by)";
 constexpr const char* kMarkStarted =
     "UPDATE runs SET status = 'running', started_at = :started_at WHERE id = :id";
 constexpr const char* kUpdateProgress =
@@ -141,9 +194,88 @@ constexpr const char* kInterruptUnfinished =
     "WHERE status = 'running'";
 }  // namespace sql
 
+// A read transaction for the statements of one call; ended however the call ends (a reader
+// must go back to the pool with none open).
+class ReadSnapshot {
+ public:
+  explicit ReadSnapshot(Database& db) : db_(db) { db_.exec("BEGIN"); }
+  ~ReadSnapshot() {
+    try {
+      db_.exec("COMMIT");
+    } catch (const std::exception&) {
+      // A read transaction has nothing to lose; SQLite ends it when the commit fails.
+    }
+  }
+  ReadSnapshot(const ReadSnapshot&) = delete;
+  ReadSnapshot& operator=(const ReadSnapshot&) = delete;
+
+ private:
+  Database& db_;
+};
+
+// The statement for one RunQuery: WHERE from its filters, ORDER BY its key then created_at and
+// id (an index on (key, created_at, id) serves it), LIMIT/OFFSET for its page. `count` gives
+// COUNT(*) instead of rows. Parameters are bound by bindRunQuery; values never enter the text.
+std::string listQuery(const RunQuery& q, bool count) {
+  std::string where;
+  auto clause = [&](const std::string& c) { where += (where.empty() ? " WHERE " : " AND ") + c; };
+  if (!q.statuses.empty()) {
+    std::string in;
+    for (std::size_t i = 0; i < q.statuses.size(); ++i) in += (i ? ", :s" : ":s") + std::to_string(i);
+    clause("status IN (" + in + ")");
+  }
+  if (!q.preset.empty()) clause("preset = :preset");
+  if (!q.study.empty()) clause("study = :study");
+  // LIKE is case-insensitive for ASCII; the user's % and _ are escaped to mean themselves.
+  if (!q.nameContains.empty()) clause("name LIKE :name_pattern ESCAPE '\\'");
+  if (count) return "SELECT COUNT(*) FROM runs" + where;
+  const std::string direction = q.descending ? " DESC" : " ASC";
+  // Ties go by creation, then id, in the same direction: one index walk serves the order.
+  std::string text = std::string(sql::kListColumns) + where + " ORDER BY ";
+  if (q.sort != RunSortKey::CreatedAt) text += std::string(sortKeyName(q.sort)) + direction + ", ";
+  text += "created_at" + direction + ", id" + direction;
+  if (q.limit || q.offset > 0) text += " LIMIT :limit OFFSET :offset";
+  return text;
+}
+
+void bindRunQuery(StatementUse& use, const RunQuery& q, bool count) {
+  for (std::size_t i = 0; i < q.statuses.size(); ++i)
+    use.bindText((":s" + std::to_string(i)).c_str(), toString(q.statuses[i]));
+  if (!q.preset.empty()) use.bindText(":preset", q.preset);
+  if (!q.study.empty()) use.bindText(":study", q.study);
+  if (!q.nameContains.empty()) {
+    std::string pattern = "%";
+    for (char c : q.nameContains) {
+      if (c == '%' || c == '_' || c == '\\') pattern += '\\';
+      pattern += c;
+    }
+    use.bindText(":name_pattern", pattern + "%");
+  }
+  if (!count && (q.limit || q.offset > 0)) use.bind(":limit", q.limit.value_or(-1)).bind(":offset", q.offset);
+}
+
 void bindOptional(StatementUse& use, const char* name, const std::optional<double>& value) {
   if (value) use.bind(name, *value);
   else use.bindNull(name);
+}
+
+// A new run's row (sql::kInsertRun); returns its id.
+std::int64_t insertRunRow(Statement& statement, Database& db, const RunRecord& run) {
+  auto use = statement.use();
+  use.bindText(":name", run.name)
+      .bindText(":preset", run.preset)
+      .bindText(":scene", run.scene)
+      .bindText(":status", std::string(toString(run.status)))
+      .bind(":particles", run.particles)
+      .bind(":created_at", run.createdAt);
+  bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
+  use.bindText(":warnings", run.warnings);
+  if (run.origin) use.bind(":origin_run_id", run.origin->runId).bindText(":origin_stage", run.origin->stage);
+  else use.bindNull(":origin_run_id").bindNull(":origin_stage");
+  use.bindText(":study", run.study);
+  use.bindText(":produced_by", run.producedBy);
+  use.run();
+  return db.lastInsertId();
 }
 
 std::optional<double> optionalAt(StatementUse& use, int column) {
@@ -172,6 +304,9 @@ RunRecord readRun(StatementUse& use) {
   r.cpuSeconds = optionalAt(use, 15);
   r.estimatedSeconds = optionalAt(use, 16);
   if (!use.isNull(17)) r.warnings = use.textAt(17);
+  if (!use.isNull(18)) r.origin = RunOrigin{use.int64At(18), use.isNull(19) ? std::string() : use.textAt(19)};
+  r.study = use.textAt(20);
+  r.producedBy = use.textAt(21);
   return r;
 }
 
@@ -199,8 +334,21 @@ struct Repository::Reader {
       it = statements.emplace(text, std::make_unique<Statement>(db, text)).first;
     return *it->second;
   }
+  // A statement built for a query (listQuery): few distinct texts, kept like the others; the
+  // map's key holds the text the Statement points at.
+  Statement& statement(const std::string& text) {
+    auto it = built.find(text);
+    if (it == built.end()) {
+      if (built.size() >= kMaxBuiltStatements) built.clear();
+      it = built.emplace(text, nullptr).first;
+      it->second = std::make_unique<Statement>(db, it->first.c_str());
+    }
+    return *it->second;
+  }
+  static constexpr std::size_t kMaxBuiltStatements = 64;
   Database db;
   std::map<const char*, std::unique_ptr<Statement>> statements;
+  std::map<std::string, std::unique_ptr<Statement>> built;
 };
 
 // Borrows a reader for one call and gives it back.
@@ -213,6 +361,8 @@ class Repository::ReaderLease {
     repo_.idleReaders_.push_back(std::move(reader_));
   }
   Statement& statement(const char* text) { return reader_->statement(text); }
+  Statement& statement(const std::string& text) { return reader_->statement(text); }
+  Database& db() { return reader_->db; }
 
  private:
   Repository& repo_;
@@ -396,11 +546,58 @@ Repository::ReaderLease Repository::lease() {
 }
 
 std::vector<RunRecord> Repository::listRuns() {
+  RunQuery everyRun;
+  everyRun.descending = false;
+  return listRuns(everyRun).runs;
+}
+
+RunPage Repository::listRuns(const RunQuery& query) {
   auto reader = lease();
-  auto use = reader.statement(sql::kListRuns).use();
-  std::vector<RunRecord> runs;
-  while (use.step()) runs.push_back(readRun(use));
-  return runs;
+  RunPage page;
+  // One read transaction: the page and the count see the same database.
+  ReadSnapshot snapshot(reader.db());
+  {
+    auto use = reader.statement(listQuery(query, false)).use();
+    bindRunQuery(use, query, false);
+    while (use.step()) page.runs.push_back(readRun(use));
+  }
+  {
+    auto use = reader.statement(listQuery(query, true)).use();
+    bindRunQuery(use, query, true);
+    if (use.step()) page.total = use.int64At(0);
+  }
+  return page;
+}
+
+std::string Repository::queryPlan(const RunQuery& query, bool count) {
+  auto reader = lease();
+  auto use = reader.statement("EXPLAIN QUERY PLAN " + listQuery(query, count)).use();
+  bindRunQuery(use, query, count);
+  std::string plan;
+  while (use.step()) plan += use.textAt(3) + "\n";
+  return plan;
+}
+
+std::vector<std::int64_t> Repository::runIdsNamed(const std::string& name) {
+  auto reader = lease();
+  auto use = reader.statement(sql::kRunIdsNamed).use();
+  use.bindText(":name", name);
+  std::vector<std::int64_t> ids;
+  while (use.step()) ids.push_back(use.int64At(0));
+  return ids;
+}
+
+std::vector<StudyCounts> Repository::studies(const std::string& only) {
+  auto reader = lease();
+  auto use = reader.statement(only.empty() ? sql::kStudyCounts : sql::kOneStudyCounts).use();
+  if (!only.empty()) use.bindText(":study", only);
+  std::vector<StudyCounts> out;
+  while (use.step()) {
+    const std::string study = use.textAt(0);
+    if (out.empty() || out.back().study != study) out.push_back({study, {}});
+    out.back().byStatus[use.textAt(1)] = use.int64At(2);
+  }
+  return out;
 }
 
 std::optional<RunRecord> Repository::findRun(std::int64_t id) {
@@ -480,17 +677,7 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
   enqueue([run, done](Writer& w) {
     std::int64_t id = 0;
     try {
-      auto use = w.statement(sql::kInsertRun).use();
-      use.bindText(":name", run.name)
-          .bindText(":preset", run.preset)
-          .bindText(":scene", run.scene)
-          .bindText(":status", std::string(toString(run.status)))
-          .bind(":particles", run.particles)
-          .bind(":created_at", run.createdAt);
-      bindOptional(use, ":estimated_seconds", run.estimatedSeconds);
-      use.bindText(":warnings", run.warnings);
-      use.run();
-      id = w.db.lastInsertId();
+      id = insertRunRow(w.statement(sql::kInsertRun), w.db, run);
     } catch (...) {
       // Told after the transaction, once: a refused batch runs its jobs again.
       w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
@@ -502,6 +689,70 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
     });
   });
   return future;
+}
+
+std::future<std::vector<std::int64_t>> Repository::insertStudy(const StudyRecord& study,
+                                                              const std::vector<RunRecord>& runs) {
+  auto done = std::make_shared<std::promise<std::vector<std::int64_t>>>();
+  auto future = done->get_future();
+  enqueue([study, runs, done](Writer& w) {
+    std::vector<std::int64_t> ids;
+    // All or nothing inside the batch's transaction: a study is never stored in part.
+    w.db.exec("SAVEPOINT study");
+    try {
+      for (const RunRecord& run : runs) ids.push_back(insertRunRow(w.statement(sql::kInsertRun), w.db, run));
+      nlohmann::json listed = nlohmann::json::parse(study.runs);
+      for (std::size_t k = 0; k < ids.size() && k < listed.size(); ++k) listed[k]["id"] = ids[k];
+      auto use = w.statement(sql::kInsertStudy).use();
+      use.bindText(":name", study.name)
+          .bindText(":spec", study.spec)
+          .bindText(":runs", listed.dump())
+          .bind(":created_at", study.createdAt)
+          .bindText(":status", study.status);
+      use.run();
+      w.db.exec("RELEASE study");
+    } catch (...) {
+      try {
+        w.db.exec("ROLLBACK TO study");
+        w.db.exec("RELEASE study");
+      } catch (const std::exception&) {
+        // SQLite rolled the whole transaction back already (a full disk).
+      }
+      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+      return;
+    }
+    w.afterCommit.push_back([done, ids, &w] {
+      if (w.committed) return done->set_value(ids);
+      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
+    });
+  });
+  return future;
+}
+
+void Repository::setStudyStatus(const std::string& name, const std::string& status) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kSetStudyStatus).use();
+    use.bindText(":name", name).bindText(":status", status);
+    use.run();
+  });
+}
+
+void Repository::deleteStudy(const std::string& name) {
+  enqueue([=](Writer& w) {
+    auto use = w.statement(sql::kDeleteStudy).use();
+    use.bindText(":name", name);
+    use.run();
+  });
+}
+
+std::vector<StudyRecord> Repository::launchedStudies(const std::string& only) {
+  auto reader = lease();
+  auto use = reader.statement(only.empty() ? sql::kLaunchedStudies : sql::kOneLaunchedStudy).use();
+  if (!only.empty()) use.bindText(":name", only);
+  std::vector<StudyRecord> out;
+  while (use.step())
+    out.push_back({use.textAt(0), use.textAt(1), use.textAt(2), use.doubleAt(3), use.textAt(4)});
+  return out;
 }
 
 void Repository::markStarted(std::int64_t id, double startedAt) {

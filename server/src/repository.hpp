@@ -9,6 +9,7 @@
 #include <deque>
 #include <functional>
 #include <future>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "run_query.hpp"
 #include "run_record.hpp"
 
 namespace grainlab::server {
@@ -34,6 +36,29 @@ struct RunEnd {
   int particles = 0;
   std::optional<double> peakPhiMobDeg;
   std::string warnings = "[]";  ///< the validity envelope's, as summary.json's "warnings" (JSON)
+};
+
+/// A page of the runs list and how many runs match the query in all.
+struct RunPage {
+  std::vector<RunRecord> runs;
+  std::int64_t total = 0;
+};
+
+/// A study's runs counted by status ("completed" -> 12, ...).
+struct StudyCounts {
+  std::string study;
+  std::map<std::string, std::int64_t> byStatus;
+};
+
+/// A study launched on this server (POST /api/studies): the spec as given, its runs as a JSON
+/// array ([{"id", "name", "parameters": {path: value}}], in the spec's order) and what was
+/// asked of it: "launched" or "cancelled".
+struct StudyRecord {
+  std::string name;
+  std::string spec;
+  std::string runs = "[]";
+  double createdAt = 0;
+  std::string status = "launched";
 };
 
 class Repository {
@@ -56,6 +81,19 @@ class Repository {
   // ---- reads (any thread) ----
   /// Every run, oldest first, without its scene (RunRecord::scene is empty).
   std::vector<RunRecord> listRuns();
+  /// The runs a query asks for (one page of them if it has a limit), without their scenes,
+  /// and how many match in all; both read in one transaction.
+  RunPage listRuns(const RunQuery& query);
+  /// SQLite's EXPLAIN QUERY PLAN of the query's page (or count) statement, one line per step:
+  /// what tests and benchmarks check to see an index serve it.
+  std::string queryPlan(const RunQuery& query, bool count);
+  /// The ids of the runs with exactly this name (runs_by_name), oldest first.
+  std::vector<std::int64_t> runIdsNamed(const std::string& name);
+  /// The studies (imported sweeps) with their runs counted by status, by name; `only`: just
+  /// that one (none if no run belongs to it).
+  std::vector<StudyCounts> studies(const std::string& only = {});
+  /// The studies launched here, by name; `only`: just that one (none if it was not launched).
+  std::vector<StudyRecord> launchedStudies(const std::string& only = {});
   std::optional<RunRecord> findRun(std::int64_t id);
   std::vector<SampleRecord> samples(std::int64_t id);
   /// Histogram messages' JSON in sample order; `latestOnly` keeps the last one.
@@ -69,6 +107,13 @@ class Repository {
   // ---- writes (queued to the writer thread, applied in order) ----
   /// Resolves to the new run's id (never reused) once it is committed; run.id is ignored.
   std::future<std::int64_t> insertRun(const RunRecord& run);
+  /// A launched study and its runs in one go (their `study` set by the caller): resolves to
+  /// the runs' ids in order, or throws with nothing stored (a name already taken, a full disk).
+  /// study.runs' entries get their run's "id".
+  std::future<std::vector<std::int64_t>> insertStudy(const StudyRecord& study, const std::vector<RunRecord>& runs);
+  void setStudyStatus(const std::string& name, const std::string& status);
+  /// The study's row only (its runs are deleted one by one): a launch taken back.
+  void deleteStudy(const std::string& name);
   void markStarted(std::int64_t id, double startedAt);
   void updateProgress(std::int64_t id, double progress, const std::string& stage,
                       std::int64_t steps);

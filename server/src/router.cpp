@@ -9,12 +9,13 @@
 
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
+#include "run_query.hpp"
 #include "run_service.hpp"
 
 namespace grainlab::server {
 namespace {
 
-using Query = std::map<std::string, std::string, std::less<>>;
+using Query = QueryParameters;
 
 std::vector<std::string_view> splitPath(std::string_view path) {
   std::vector<std::string_view> segments;
@@ -162,10 +163,27 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (method != "POST") return methodNotAllowed(method, path, "POST");
     return jsonResponse(200, service_.importSweep(request.body));
   }
+  if (seg.size() == 2 && seg[1] == "studies") {
+    if (read) return jsonResponse(200, service_.studies());
+    if (method != "POST") return methodNotAllowed(method, path, "GET, HEAD, POST");
+    const std::string name = service_.launchStudy(request.body);
+    auto r = textResponse(201, "application/json", service_.studyText(name));
+    r.headers.emplace_back("Location", "/api/studies/" + name);
+    return r;
+  }
+  if (seg.size() == 3 && seg[1] == "studies") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    return textResponse(200, "application/json", service_.studyText(std::string(seg[2])));
+  }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "cancel") {
+    if (method != "POST") return methodNotAllowed(method, path, "POST");
+    auto [status, study] = service_.cancelStudy(std::string(seg[2]));
+    return textResponse(status, "application/json", std::move(study));
+  }
   if (seg.size() < 2 || seg[1] != "runs") return noRoute();
 
   if (seg.size() == 2) {
-    if (read) return jsonResponse(200, service_.list());
+    if (read) return jsonResponse(200, service_.list(parseRunQuery(query)));
     if (method != "POST") return methodNotAllowed(method, path, "GET, HEAD, POST");
     const auto id = service_.create(request.body);
     auto r = jsonResponse(201, {{"id", id}});

@@ -13,6 +13,12 @@ namespace grainlab::server {
 /// the database's one vocabulary.
 using grainlab::RunStatus;
 
+/// The stored run, and its stage, whose end a run started from (start_from.run_id).
+struct RunOrigin {
+  std::int64_t runId = 0;
+  std::string stage;
+};
+
 struct RunRecord {
   std::int64_t id = 0;
   std::string name;
@@ -33,6 +39,11 @@ struct RunRecord {
   std::optional<double> estimatedSeconds;
   std::optional<double> peakPhiMobDeg;
   std::string warnings = "[]";     ///< the validity envelope's, as summary.json's "warnings" (JSON)
+  std::optional<RunOrigin> origin; ///< set when it started from a stored run's stage
+  /// The program that produced it: "grainlab", or "lammps" for an imported LAMMPS run
+  /// (`grainlab import lammps --db`). The API's `origin`.
+  std::string producedBy = "grainlab";
+  std::string study;               ///< the study it belongs to (the sweep it was imported from); empty if none
 };
 
 /// One row of the series as the engine produced it.

@@ -1,4 +1,5 @@
 #include "run_service.hpp"
+#include "study_summary.hpp"
 #include "sweep_import.hpp"
 
 #include <algorithm>
@@ -82,10 +83,11 @@ RunService::RunService(Repository& repo, StreamHub& hub, const ServeOptions& opt
       hub_(hub),
       options_(options),
       run_(options.runFunction ? options.runFunction : RunFunction([](const RunRequest& r, RunObserver& o) {
-        return r.resume ? grainlab::resumeRun(r.checkpoint.path, o, r.checkpoint)
-                        : grainlab::runScene(r.scene, o, {}, r.checkpoint);
+        return r.resume ? grainlab::resumeRun(r.checkpoint.path, o, r.checkpoint, r.stageDirectory)
+                        : grainlab::runScene(r.scene, o, {}, r.checkpoint, r.stageDirectory);
       })),
       checkpointDir_(options.checkpointDir.empty() ? options.db + ".checkpoints" : options.checkpointDir),
+      specimens_(checkpointDir_),
       manager_(options.maxConcurrentRuns, static_cast<std::size_t>(std::max(0, options.maxQueuedRuns))),
       startedAt_(unixNow()) {
   requeueStored();
@@ -109,7 +111,12 @@ void RunService::removeCheckpoint(std::int64_t id) const {
 void RunService::requeueStored() {
   std::error_code ec;
   std::filesystem::create_directories(checkpointDir_, ec);
-  for (const RunRecord& listed : repo_.listRuns()) {
+  specimens_.removeStale();
+  // Only the runs that may need it: queued or interrupted, oldest first (runs_by_status).
+  RunQuery waiting;
+  waiting.statuses = {RunStatus::Queued, RunStatus::Interrupted};
+  waiting.descending = false;
+  for (const RunRecord& listed : repo_.listRuns(waiting).runs) {
     if (listed.status == RunStatus::Interrupted && hasCheckpoint(listed.id)) {
       if (!options_.resumeInterrupted) {
         std::cerr << "grainlab serve: run " << listed.id << " (" << listed.name << ") was interrupted at step "
@@ -132,6 +139,7 @@ void RunService::requeueStored() {
     try {
       const auto record = repo_.findRun(listed.id);  // the list leaves the scenes out
       Scene scene = parseScene(nlohmann::json::parse(record->scene));
+      specimens_.pointAtOwnCopy(scene, listed.id);
       const auto submitted = enqueue(listed.id, listed.particles, std::move(scene), hasCheckpoint(listed.id));
       if (submitted == RunManager::Submit::Started || submitted == RunManager::Submit::Queued) continue;
       end.error = "the run queue was full when the server restarted";
@@ -168,27 +176,54 @@ std::int64_t RunService::create(const std::string& body) {
   if (!request.is_object())
     throw ApiError(400, "expected a scene object or {\"preset\": NAME}", "(json)");
 
-  RunRecord record;
+  std::string preset;
   nlohmann::json sceneJson;
   if (request.contains("preset")) {
     if (request.size() != 1)
       throw ApiError(400, "a preset request has the one key \"preset\"; send a whole scene to change it",
                      "preset");
     if (!request["preset"].is_string()) throw ApiError(400, "must be a preset name (a string)", "preset");
-    record.preset = request["preset"].get<std::string>();
+    preset = request["preset"].get<std::string>();
     try {
-      sceneJson = presetScene(record.preset);
+      sceneJson = presetScene(preset);
     } catch (const SceneError& e) {
       throw ApiError(400, e.reason(), e.field());
     }
   } else {
     sceneJson = std::move(request);
   }
+  AdmittedRun run = admit(std::move(sceneJson), std::move(preset));
+  if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
+      manager_.running() >= manager_.maxConcurrent())
+    throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
+                            " waiting); try again when a run has finished");
+  std::int64_t id = 0;
+  try {
+    id = repo_.insertRun(run.record).get();
+  } catch (const std::exception&) {
+    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
+  }
+  try {
+    startAdmitted(id, run);
+  } catch (const ApiError&) {
+    repo_.deleteRun(id).get();  // take it back whole
+    throw;
+  }
+  return id;
+}
 
+RunService::AdmittedRun RunService::admit(nlohmann::json sceneJson, std::string preset) {
+  RunRecord record;
+  record.preset = std::move(preset);
   // The parser promises SceneError; anything else still means the scene is bad.
   Scene scene = badSceneAs400([&] { return parseScene(sceneJson); }, "(json)");
-  // start_from names a file on this machine: a client may not have the server read one.
-  if (scene.startFrom) throw ApiError(400, "the server does not start runs from a prepared specimen", "start_from");
+  // A stored run's stage, linked here for this run; never a file the request names.
+  std::optional<StagedSpecimen> specimen;
+  if (scene.startFrom) {
+    RunOrigin origin;
+    specimen.emplace(specimens_.stage(scene, storedRun(scene.startFrom->runId), origin));
+    record.origin = origin;
+  }
 
   const int particles = estimateParticles(scene);
   if (particles > options_.maxParticles)
@@ -200,8 +235,17 @@ std::int64_t RunService::create(const std::string& body) {
   // slot at 0 % for ever: refuse it now, naming the field that drives the cost.
   // Building the world can also refuse the scene (particles overlapping by half at the start).
   // Past the validity envelope's hard limits the results would mean nothing: refused by field.
-  const ValidityAssessment validity =
-      badSceneAs400([&] { return assessSceneValidity(scene, std::numeric_limits<double>::infinity()); }, "(scene)");
+  // A prepared specimen is checked here: missing, unreadable, or one the scene does not fit.
+  const ValidityAssessment validity = badSceneAs400(
+      [&] {
+        try {
+          return assessSceneValidity(scene, std::numeric_limits<double>::infinity());
+        } catch (const SceneError& e) {
+          if (!record.origin) throw;
+          throw SceneError(e.field(), specimens_.withoutPaths(e.reason(), scene, *record.origin));
+        }
+      },
+      "(scene)");
   if (!validity.refusals.empty()) throw ApiError(400, validity.refusalMessage(), validity.refusals.front().field);
   const RunCost& cost = validity.cost;
   if (cost.certainSeconds() > options_.maxRunSeconds)
@@ -210,10 +254,6 @@ std::int64_t RunService::create(const std::string& body) {
                        "), more than this server's limit of " + humanDuration(options_.maxRunSeconds) +
                        " (grainlab serve --max-run-seconds)",
                    cost.field);
-  if (static_cast<int>(manager_.queued()) >= options_.maxQueuedRuns &&
-      manager_.running() >= manager_.maxConcurrent())
-    throw ApiError(429, "the run queue is full (" + std::to_string(options_.maxQueuedRuns) +
-                            " waiting); try again when a run has finished");
 
   record.name = scene.name;
   record.scene = sceneJson.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -222,22 +262,25 @@ std::int64_t RunService::create(const std::string& body) {
   record.estimatedSeconds = cost.certainSeconds();
   record.warnings = warningsJson(validity.warnings).dump();
   record.createdAt = unixNow();
-  std::int64_t id = 0;
-  try {
-    id = repo_.insertRun(record).get();
-  } catch (const std::exception&) {
-    throw ApiError(503, "the run could not be stored (" + repo_.lastWriteError() + ")");
-  }
-  removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
+  return AdmittedRun{std::move(record), std::move(scene), std::move(specimen)};
+}
 
-  if (const auto submitted = enqueue(id, particles, std::move(scene));
+void RunService::startAdmitted(std::int64_t id, AdmittedRun& run) {
+  removeCheckpoint(id);  // ids are never reused; this is for a database replaced under old files
+  specimens_.remove(id);
+  if (run.specimen) {
+    try {
+      specimens_.adopt(run.scene, *run.specimen, id);
+    } catch (const std::exception& e) {
+      throw ApiError(503, std::string("the specimen could not be kept for the run (") + e.what() + ")");
+    }
+  }
+  if (const auto submitted = enqueue(id, run.record.particles, std::move(run.scene));
       submitted == RunManager::Submit::QueueFull || submitted == RunManager::Submit::ShuttingDown) {
-    // Lost a race for the last queue slot (or the server is stopping): take it back whole.
-    repo_.deleteRun(id).get();
+    // Lost a race for the last queue slot (or the server is stopping).
     if (submitted == RunManager::Submit::ShuttingDown) throw ApiError(503, "the server is shutting down");
     throw ApiError(429, "the run queue is full; try again when a run has finished");
   }
-  return id;
 }
 
 nlohmann::json RunService::resume(std::int64_t id) {
@@ -295,7 +338,8 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
       const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
-      summary = run_(RunRequest{scene, checkpoint, resume}, watched);
+      summary = run_(RunRequest{scene, checkpoint, resume, specimens_.runFolder(id)}, watched);
+      if (stored && stored->origin) summary.error = specimens_.withoutPaths(summary.error, scene, *stored->origin);
       if (summary.status == RunStatus::Interrupted && limit.exceeded() && !run->stopRequested()) {
         summary.status = RunStatus::Failed;
         summary.error = "stopped after " + humanDuration(limit.seconds()) +
@@ -345,6 +389,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   if (run->deleted()) {
     // Queued after the run's last writes, so nothing of it is left behind.
     removeCheckpoint(id);
+    specimens_.remove(id);
     repo_.deleteRun(id);
     hub_.close(id);
     forget(id);
@@ -434,11 +479,28 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
   if (cancelRequested) j["cancel_requested"] = true;
   j["resumable"] = !live(r.id) && merged.status != RunStatus::Completed && merged.status != RunStatus::Cancelled &&
                    hasCheckpoint(r.id);
+  j["origin"] = merged.producedBy;
+  j["study"] = merged.study.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.study);
+  j["started_from"] = merged.origin ? nlohmann::json{{"run_id", merged.origin->runId}, {"stage", merged.origin->stage}}
+                                    : nlohmann::json(nullptr);
   if (withScene) {
+    j["specimen_stages"] = specimens_.keptStages(merged);
     auto scene = nlohmann::json::parse(merged.scene, nullptr, false);
     j["scene"] = scene.is_discarded() ? nlohmann::json(nullptr) : scene;
   }
   return j;
+}
+
+std::optional<RunRecord> RunService::storedRun(std::int64_t id) {
+  auto run = live(id);
+  if (run && run->deleted()) return std::nullopt;
+  auto record = repo_.findRun(id);
+  if (record && run && !hasEnded(record->status)) {
+    const auto s = run->state();  // the database lags the live state
+    record->status = s.status;
+    record->stage = s.stage;
+  }
+  return record;
 }
 
 RunRecord RunService::require(std::int64_t id) {
@@ -458,16 +520,51 @@ bool RunService::exists(std::int64_t id) {
   }
 }
 
-nlohmann::json RunService::list() {
+nlohmann::json RunService::list(const RunQuery& query) {
   nlohmann::json runs = nlohmann::json::array();
-  auto records = repo_.listRuns();
-  // Newest first: the run a person just started is at the top.
-  for (auto it = records.rbegin(); it != records.rend(); ++it) {
-    auto run = live(it->id);
-    if (run && run->deleted()) continue;
-    runs.push_back(runJson(*it, false));
+  const RunPage page = repo_.listRuns(query);
+  for (const RunRecord& record : page.runs) {
+    auto run = live(record.id);
+    if (run && run->deleted()) continue;  // on its way out: its rows go in the next write
+    runs.push_back(runJson(record, false));
   }
-  return {{"runs", std::move(runs)}};
+  const std::int64_t end = query.offset + (query.limit ? *query.limit : page.total);
+  return {{"runs", std::move(runs)},
+          {"total", page.total},
+          {"offset", query.offset},
+          {"limit", query.limit ? nlohmann::json(*query.limit) : nlohmann::json(nullptr)},
+          {"next", query.limit && end < page.total ? nlohmann::json("/api/runs?" + runQueryString(query, end))
+                                                   : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json RunService::studies() {
+  // Imported sweeps have runs only; a launched study is listed even once its runs are deleted.
+  std::map<std::string, nlohmann::json> byName;
+  for (const StudyCounts& study : repo_.studies()) byName[study.study] = studyJson(study);
+  for (const StudyRecord& launched : repo_.launchedStudies()) {
+    auto& study = byName[launched.name];
+    if (study.is_null()) study = studyJson(StudyCounts{launched.name, {}});
+    addLaunch(study, launched, false);
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (auto& [name, study] : byName) out.push_back(std::move(study));
+  return {{"studies", std::move(out)}};
+}
+
+nlohmann::json RunService::study(const std::string& name) {
+  const auto counts = repo_.studies(name);
+  const auto launched = repo_.launchedStudies(name);
+  if (counts.empty() && launched.empty()) throw ApiError(404, "no study '" + name + "'", "study");
+  nlohmann::json study = studyJson(counts.empty() ? StudyCounts{name, {}} : counts.front());
+  if (!launched.empty()) addLaunch(study, launched.front(), true);
+  return study;
+}
+
+std::string RunService::studyText(const std::string& name) {
+  const nlohmann::json summary = study(name);
+  const auto launched = repo_.launchedStudies(name);
+  return launched.empty() ? summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+                          : withSpec(summary, launched.front());
 }
 
 nlohmann::json RunService::get(std::int64_t id) { return runJson(require(id), true); }
@@ -558,6 +655,7 @@ void RunService::remove(std::int64_t id) {
     forget(id);
   }
   removeCheckpoint(id);
+  specimens_.remove(id);
   repo_.deleteRun(id).get();
 }
 

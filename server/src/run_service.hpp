@@ -7,13 +7,17 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "grainlab/server/serve.hpp"
 #include "run_manager.hpp"
+#include "run_query.hpp"
+#include "run_record.hpp"
 #include "series_format.hpp"
+#include "specimen_source.hpp"
 
 namespace grainlab::server {
 
@@ -21,7 +25,6 @@ class LiveRun;
 class Repository;
 class StreamHub;
 class StreamSink;
-struct RunRecord;
 struct RunEnd;
 
 class RunService {
@@ -33,9 +36,29 @@ class RunService {
   RunService& operator=(const RunService&) = delete;
 
   /// A scene object or {"preset": NAME}; returns the new run's id. 400 for a bad scene (nothing
-  /// stored), 503 past the particle limit, 429 when the queue is full.
+  /// stored), 503 past the particle limit, 429 when the queue is full. A scene may start from a
+  /// stored run's stage (start_from.run_id, SpecimenSource), never from a file it names.
   std::int64_t create(const std::string& body);
-  nlohmann::json list();
+  /// {"runs": [...], "total", "offset", "limit", "next"}: the runs the query asks for,
+  /// without their scenes; `next` the path of the page after this one, or null.
+  nlohmann::json list(const RunQuery& query = {});
+  /// {"studies": [study, ...]} by name (study_summary.hpp); study(name) one of them, 404 if
+  /// no run belongs to it.
+  nlohmann::json studies();
+  nlohmann::json study(const std::string& name);
+  /// The body of GET /api/studies/{name}: study(name) with a launched study's "spec" as posted.
+  std::string studyText(const std::string& name);
+  /// POST /api/studies (study_launch.cpp): a sweep spec, the JSON of `grainlab sweep`, becomes a
+  /// study of queued runs. Every run is admitted as create() admits one before anything is
+  /// stored: refused whole with 400 naming the spec's field or runs[K].FIELD, 429 when the
+  /// queue has no room for all of it now, 503 past the particle limit; 409 for a name in use.
+  /// Returns the new study's name.
+  std::string launchStudy(const std::string& body);
+  /// POST /api/studies/{name}/cancel: cancels its queued and running runs as cancel() does,
+  /// and its interrupted ones (their checkpoints dropped). 200 when every one of them ended
+  /// at once, 202 when a running one was asked to stop; 404 unknown, 409 when none was left.
+  /// Returns the status and the study's body (studyText).
+  std::pair<int, std::string> cancelStudy(const std::string& name);
   /// 404 for an unknown id.
   nlohmann::json get(std::int64_t id);
   nlohmann::json series(std::int64_t id);
@@ -66,6 +89,18 @@ class RunService {
   void shutdown();
 
  private:
+  /// A run that passed admission: parsed, its specimen staged, within the particle and cost
+  /// limits; ready to be stored and queued.
+  struct AdmittedRun {
+    RunRecord record;
+    Scene scene;
+    std::optional<StagedSpecimen> specimen;
+  };
+  /// Every check POST /api/runs makes of a scene but the queue's room; throws ApiError.
+  AdmittedRun admit(nlohmann::json sceneJson, std::string preset);
+  /// A stored admitted run: its specimen kept, queued. Throws ApiError (503, 429) having
+  /// taken nothing back; the caller deletes the run.
+  void startAdmitted(std::int64_t id, AdmittedRun& run);
   void execute(const std::shared_ptr<LiveRun>& run, const Scene& scene, bool resume);
   /// Queues again, in their order, the runs the database holds as queued: they were waiting
   /// when the server last stopped or was killed (a queued run with a checkpoint was waiting
@@ -86,6 +121,8 @@ class RunService {
   void forget(std::int64_t id);
   nlohmann::json runJson(const RunRecord& record, bool withScene);
   RunRecord require(std::int64_t id);
+  /// The run with its live status and stage; nothing if unknown (or being deleted).
+  std::optional<RunRecord> storedRun(std::int64_t id);
 
   Repository& repo_;
   StreamHub& hub_;
@@ -93,10 +130,12 @@ class RunService {
   RunFunction run_;
   SeriesFormat format_;
   std::string checkpointDir_;
+  SpecimenSource specimens_;  ///< the stages' ends runs keep, and the specimens runs start from
   RunManager manager_;
   std::mutex liveMutex_;
   std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;
   bool stopped_ = false;
+  std::mutex studyMutex_;  ///< one study launched or cancelled at a time
   double startedAt_;
 };
 

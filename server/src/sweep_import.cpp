@@ -81,10 +81,6 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
                                  ? spec["base"]["preset"].get<std::string>()
                                  : std::string();
 
-  // What is there already, by name, so importing twice adds nothing.
-  std::multimap<std::string, std::int64_t> existing;
-  for (const RunRecord& r : repo.listRuns()) existing.emplace(r.name, r.id);
-
   SweepImport outcome;
   for (const nlohmann::json& entry : sweep["runs"]) {
     const std::string id = entry.at("id").get<std::string>();
@@ -97,16 +93,18 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     const std::string scene = readJson(runDir / "scene.json").dump();
     RunRecord record;
     record.name = sweepName + "/" + id;
+    // Importing twice adds nothing: a run of this name with this scene is there already.
     bool seen = false;
-    for (auto [it, end] = existing.equal_range(record.name); it != end && !seen; ++it) {
-      const std::optional<RunRecord> stored = repo.findRun(it->second);
-      seen = stored && stored->scene == scene;
+    for (const std::int64_t storedId : repo.runIdsNamed(record.name)) {
+      const std::optional<RunRecord> stored = repo.findRun(storedId);
+      if ((seen = stored && stored->scene == scene)) break;
     }
     if (seen) {
       ++outcome.alreadyThere;
       continue;
     }
     record.preset = preset;
+    record.study = sweepName;
     record.scene = scene;
     record.status = RunStatus::Queued;  // until finishRun below, in the same queue of writes
     record.particles = summary.value("particles", 0);

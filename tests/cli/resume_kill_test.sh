@@ -108,6 +108,13 @@ for ((k = 1; k <= kills; ++k)); do
     "$grainlab" run "$work/scene.json" --out "$dir" 2>/dev/null  # killed before its first checkpoint
     how="restarted (no checkpoint yet)"
   fi
+  # Identical outputs cannot tell a resume from a fresh start (the run is deterministic): a resume
+  # says the step it continued from, which must be past 0.
+  if [[ $how == resumed ]] && ! grep -q '^resumed from step [1-9][0-9]* at t = ' "$work/resume.err"; then
+    echo "kill $k$note: resumed, but not from its checkpoint: $(grep -m1 '^resumed from' "$work/resume.err" || echo 'no "resumed from step N" line')"
+    failures=$((failures + 1))
+    continue
+  fi
   if verdict=$(same_outputs "$work/whole" "$dir"); then
     if [[ $how == resumed ]] && $live && $had_checkpoint; then
       genuine=$((genuine + 1))

@@ -59,4 +59,19 @@ svg = ET.parse(f"{out}/pareto.svg").getroot()
 assert svg.tag.endswith("svg")
 assert len(svg.findall(".//{http://www.w3.org/2000/svg}circle")) >= 5
 PY
+# --axes keeps only the named axes (and the reference); an unknown axis is refused by name.
+"$grainlab" tradeoff --out "$tmp/axes" --quick --axes inertial_number > /dev/null 2> "$tmp/axes.txt" \
+  || { cat "$tmp/axes.txt" >&2; fail "tradeoff --axes inertial_number exited non-zero"; }
+python3 - "$tmp/axes/tradeoff.csv" <<'PY' || fail "--axes inertial_number ran other axes"
+import csv, sys
+axes = sorted({r["axis"] for r in csv.DictReader(open(sys.argv[1]))})
+assert axes == ["inertial_number", "reference"], axes
+PY
+set +e
+"$grainlab" tradeoff --out "$tmp/bad" --quick --axes inertia 2> "$tmp/bad.txt"
+status=$?
+set -e
+[[ $status -eq 2 ]] || fail "an unknown axis exited $status, not 2"
+grep -q -- '--axes: unknown axis "inertia"' "$tmp/bad.txt" || fail "no error naming the axis: $(cat "$tmp/bad.txt")"
+[[ ! -e $tmp/bad ]] || fail "a refused tradeoff wrote $tmp/bad"
 echo "tradeoff: all checks passed"

@@ -72,8 +72,15 @@ def slot(scene, path):
 
 
 def get(scene, path):
-    holder, key = slot(scene, path)
-    return holder.get(key)
+    """The value at a concrete path, or None; unlike slot, it adds no empty object on the way
+    (an empty "start_from" is itself an error)."""
+    at = scene
+    for part in path.split("."):
+        m = re.fullmatch(r"(\w+)\[(\d+)\]", part)
+        at = at.get(m.group(1), [])[int(m.group(2))] if m else at.get(part) if isinstance(at, dict) else None
+        if at is None:
+            return None
+    return at
 
 
 def put(scene, path, value):

@@ -44,6 +44,14 @@ class ClientTest(unittest.TestCase):
     def test_submit_wait_fetch(self):
         run_id = self.client.submit(PRESET)
         self.assertIn(run_id, [r["id"] for r in self.client.runs()])
+        # Filtered and paged on the server: the run is found by its name, and not under a status
+        # it does not have; a page of one is one run.
+        self.assertIn(run_id, [r["id"] for r in self.client.runs(name=PRESET.upper())])
+        self.assertNotIn(run_id, [r["id"] for r in self.client.runs(status=["failed", "cancelled"])])
+        self.assertEqual(len(self.client.runs(limit=1)), 1)
+        one_by_one = grainlab.Client(self.client.url)
+        one_by_one.page_size = 1  # the whole list walked a page of one run at a time
+        self.assertEqual([r["id"] for r in one_by_one.runs()], [r["id"] for r in self.client.runs()])
         run = self.client.wait(run_id, timeout=600, poll=0.2)
         self.assertEqual(run["status"], "completed")
         series = self.client.series(run_id)

@@ -2,7 +2,8 @@
 // the same bytes as the same run done without stopping — series.csv, the final particles and
 // contacts, summary.json apart from its wall-clock figures, and ParaView frames — for discs
 // and polygons, in the DEM (one and two threads) and Box2D modes. And a checkpoint that
-// cannot be trusted is refused, with the previous good one used instead.
+// cannot be trusted is refused, with the previous good one used instead. Each resume continues
+// from the step where the run stopped (identical bytes alone would not show a fresh start).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "grainlab/checkpoint.hpp"
 #include "grainlab/presets.hpp"
@@ -39,6 +41,17 @@ class StoppingOutput : public RunOutput {
  private:
   double stopAt_;
   double progress_ = 0;
+};
+
+// The files of a run, and the cost it announced before its first step.
+class EstimatingOutput : public RunOutput {
+ public:
+  using RunOutput::RunOutput;
+  void onEstimate(const RunCost& cost) override {
+    RunOutput::onEstimate(cost);
+    estimate = cost;
+  }
+  RunCost estimate;
 };
 
 // summary.json without what the wall clock decides.
@@ -88,24 +101,37 @@ TEST_P(Resume, StoppedTwiceEndsByteIdenticalToTheUninterruptedRun) {
   }
   const std::string checkpoint = (stopped / "checkpoint.bin").string();
   const CheckpointPolicy policy{checkpoint, 1e9, GetParam().scene.dump()};  // only at the stops
+  std::vector<std::int64_t> stops, resumedFrom;  // the step of each stop, and each resume's start
   {
     StoppingOutput output(stopped, scene, 0.05);
     const RunSummary first = runScene(scene, output, {}, policy);
     ASSERT_EQ(first.status, RunStatus::Interrupted) << first.error;
     ASSERT_EQ(first.checkpoints, 1);
     ASSERT_TRUE(fs::exists(checkpoint));
+    stops.push_back(first.steps);
   }
   {
     StoppingOutput output(stopped, scene, 0.7);
     const RunSummary second = resumeRun(checkpoint, output, policy);
     ASSERT_EQ(second.status, RunStatus::Interrupted) << second.error;
     ASSERT_TRUE(second.resumeNote.empty()) << second.resumeNote;
+    resumedFrom.push_back(second.resumedFromStep);
+    stops.push_back(second.steps);
   }
   {
-    RunOutput output(stopped.string(), scene, nullptr);
+    EstimatingOutput output(stopped.string(), scene, nullptr);
     const RunSummary last = resumeRun(checkpoint, output, policy);
     ASSERT_EQ(last.status, RunStatus::Completed) << last.error;
+    resumedFrom.push_back(last.resumedFromStep);
+    // Resumed in shearing: the estimate counts the stages still to run, not compaction and
+    // consolidation again (those end on a criterion: they would add bounded time).
+    EXPECT_EQ(output.estimate.firstStage, scene.stages.size() - 1);
+    EXPECT_EQ(output.estimate.boundedTime, 0.0);
   }
+  // Identical outputs alone cannot tell a resume from a run started afresh (the simulation is
+  // deterministic): each resume must have continued from the step where the run before it stopped.
+  ASSERT_GT(stops[0], 0);
+  EXPECT_EQ(resumedFrom, stops) << "a resume that ignored its checkpoint starts at step 0 (or says -1)";
   for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv", "histograms.csv"}) {
     if (std::string(file) == "histograms.csv" && !scene.output.histograms) continue;
     const std::string a = fileBytes(whole / file), b = fileBytes(stopped / file);

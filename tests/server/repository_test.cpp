@@ -20,6 +20,13 @@ std::string freshDb(const std::string& name) {
   return path.string();
 }
 
+// What a database from before studies looked like (schema 5): no study column, no list indexes,
+// no studies table.
+constexpr const char* kUndoStudies =
+    "DROP TABLE studies; DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
+    "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
+    "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study;";
+
 RunRecord queued(const std::string& name) {
   RunRecord r;
   r.name = name;
@@ -151,9 +158,12 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
     repo.flush().get();
   }
   {
-    // What a version-1 database looked like: no cpu_seconds, estimated_seconds nor warnings column.
+    // What a version-1 database looked like: no cpu_seconds, estimated_seconds, warnings nor
+    // origin columns.
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
+    db.exec(kUndoStudies);
+    db.exec("ALTER TABLE runs DROP COLUMN produced_by; ALTER TABLE runs DROP COLUMN origin_stage; ALTER TABLE runs DROP COLUMN origin_run_id; "
+            "ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN estimated_seconds; "
             "ALTER TABLE runs DROP COLUMN cpu_seconds; PRAGMA user_version = 1;");
   }
   Repository repo(path);
@@ -164,8 +174,59 @@ TEST(Repository, UpgradesADatabaseFromBeforeCpuSecondsKeepingItsRuns) {
   EXPECT_FALSE(run->cpuSeconds);
   EXPECT_FALSE(run->estimatedSeconds);
   EXPECT_EQ(run->warnings, "[]");  // a run from before the envelope: none recorded
+  EXPECT_FALSE(run->origin);       // nor started from a stored run
+  EXPECT_EQ(run->producedBy, "grainlab");  // schema 6: every run before it was grainlab's own
+  // Schema 5: the stored run and stage a run started from.
+  RunRecord branched = queued("branched");
+  branched.origin = RunOrigin{id, "consolidation"};
+  const auto branchedId = repo.insertRun(branched).get();
+  const auto stored = repo.findRun(branchedId);
+  ASSERT_TRUE(stored && stored->origin);
+  EXPECT_EQ(stored->origin->runId, id);
+  EXPECT_EQ(stored->origin->stage, "consolidation");
+  EXPECT_TRUE(repo.listRuns().back().origin);
+  RunRecord imported = queued("imported");
+  imported.producedBy = "lammps";
+  EXPECT_EQ(repo.findRun(repo.insertRun(imported).get())->producedBy, "lammps");
   Database db(path, false);
   EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
+}
+
+TEST(Repository, AStudyIsStoredWithItsRunsOrNotAtAll) {
+  const auto path = freshDb("studies");
+  Repository repo(path);
+  StudyRecord study;
+  study.name = "friction";
+  study.spec = R"({"name":"friction"})";
+  study.runs = R"([{"name":"friction/001"},{"name":"friction/002"}])";
+  study.createdAt = 1700000000.0;
+  std::vector<RunRecord> runs = {queued("friction/001"), queued("friction/002")};
+  for (RunRecord& r : runs) r.study = "friction";
+  const auto ids = repo.insertStudy(study, runs).get();
+  ASSERT_EQ(ids.size(), 2u);
+  EXPECT_EQ(repo.findRun(ids[1])->study, "friction");
+  const auto stored = repo.launchedStudies("friction");
+  ASSERT_EQ(stored.size(), 1u);
+  // Each listed run carries the id it was given.
+  EXPECT_EQ(stored[0].runs, R"([{"id":)" + std::to_string(ids[0]) + R"(,"name":"friction/001"},{"id":)" +
+                                std::to_string(ids[1]) + R"(,"name":"friction/002"}])");
+  EXPECT_EQ(stored[0].status, "launched");
+
+  // The name is taken: the study and every one of its runs are refused, even the runs the
+  // transaction had inserted before the study's row failed.
+  runs.push_back(queued("friction/003"));
+  EXPECT_THROW(repo.insertStudy(study, runs).get(), std::exception);
+  EXPECT_EQ(repo.listRuns().size(), 2u);
+  EXPECT_EQ(repo.launchedStudies().size(), 1u);
+  // Writes queued in the same batch after it still go in.
+  EXPECT_GT(repo.insertRun(queued("after")).get(), ids[1]);
+
+  repo.setStudyStatus("friction", "cancelled");
+  repo.flush().get();
+  EXPECT_EQ(repo.launchedStudies("friction")[0].status, "cancelled");
+  repo.deleteStudy("friction");
+  repo.flush().get();
+  EXPECT_TRUE(repo.launchedStudies().empty());
 }
 
 TEST(Repository, RefusesADatabaseFromANewerProgram) {

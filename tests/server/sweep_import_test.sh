@@ -56,5 +56,12 @@ req GET /api/sweeps/import
 expect "GET is not allowed" 405
 req GET /api/runs
 check "six runs imported in all, besides the live one" test "$(json 'b.runs.filter(r => r.name.includes("/0")).length')" -eq 6
+# Each sweep is a study: its runs carry its name and are listed by it.
+req GET "/api/runs?study=second&limit=1"
+expect "GET /api/runs?study=second finds the second sweep's runs" 200 '"study":"second"'
+check "...both, one to a page" test "$(json 'b.total + "," + b.runs.length + "," + b.runs[0].name.startsWith("second/")')" = "2,1,true"
+req GET /api/studies
+expect "GET /api/studies lists the imported sweeps" 200 '"name":"first"'
+check "...three, each of 2 completed runs" test "$(json 'b.studies.map(s => s.name + ":" + s.by_status.completed).join(" ")')" = "first:2 second:2 third:2"
 stop_server
 finish

@@ -43,6 +43,10 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('the reference fidelity sets the shearing rate for discs (I = 1e-4)', (await page.inputValue('#field-strain_rate')) === '0.266');
   const edited = JSON.parse(await page.inputValue('textarea.scene-json'));
   check('the reference fidelity samples every 0.001 of strain', edited.output?.sample_strain === 0.001, JSON.stringify(edited.output));
+  // The draft shears at I = 3e-4, the fastest rate at which the servo holds σ11 (docs/speed-accuracy.md).
+  await page.selectOption('#field-fidelity', 'draft');
+  check('the draft fidelity shears discs at I = 3e-4, inside the servo\'s bound', (await page.inputValue('#field-strain_rate')) === '0.798');
+  await page.selectOption('#field-fidelity', 'reference');
   // The loading paths (docs/loading-paths.md): the form offers each as the shearing stage,
   // with its own fields.
   const pathOptions = await page.$$eval('#field-path option', (options) => options.map((o) => o.value));
@@ -198,6 +202,24 @@ await runBrowserTest([], async ({ server, browser }) => {
   const csvLines = csv.trim().split('\n');
   check('the CSV link serves series.csv with the contract\'s header', csvLines[0].startsWith('step,time,stage,axial_strain'), csvHref);
   check('the CSV has one line per sample', csvLines.length - 1 === last + 1, `${csvLines.length - 1} rows, slider has ${last + 1}`);
+  // Ink alone would pass a chart of the wrong column: the strength chart must plot, against
+  // ε22 in %, series.csv's φ_mob and 2q (σ1 − σ3 in kPa) of the shearing rows.
+  const header = csvLines[0].split(',');
+  const cell = (line, name) => line.split(',')[header.indexOf(name)];
+  const shearingRows = csvLines.slice(1).filter((line) => cell(line, 'stage') === 'shearing');
+  const expected = [
+    shearingRows.map((line) => 100 * Number(cell(line, 'axial_strain'))),
+    shearingRows.map((line) => Number(cell(line, 'phi_mob_deg'))),
+    shearingRows.map((line) => 2e-3 * Number(cell(line, 'q'))),
+  ];
+  const plotted = await page.$eval('.chart-panel[data-chart="strength"]', (p) => p.uplot.data.map((s) => Array.from(s)));
+  const mismatch = ['x (ε22 %)', 'φ_mob', 'σ1 − σ3'].flatMap((name, k) => {
+    if (plotted[k]?.length !== expected[k].length) return [`${name}: ${plotted[k]?.length} points plotted, ${expected[k].length} shearing rows`];
+    const bad = expected[k].findIndex((v, i) => !(Math.abs(plotted[k][i] - v) <= 1e-9 * Math.max(1, Math.abs(v))));
+    return bad < 0 ? [] : [`${name} at row ${bad}: plotted ${plotted[k][bad]}, series.csv gives ${expected[k][bad]}`];
+  });
+  check('the strength chart plots series.csv\'s φ_mob and σ1 − σ3 of every shearing row', mismatch.length === 0 && shearingRows.length >= 10,
+    mismatch.join('; ') || `${shearingRows.length} rows`);
 
   // ---- the runs list shows the run ----
   await page.getByRole('link', { name: 'Runs' }).first().click();

@@ -75,7 +75,7 @@ await runBrowserTest(['--token-file', tokenFile], async ({ server, browser }) =>
     (await page.locator('.run-header .status').getAttribute('data-status')) === 'completed', 180);
   check('the run completes in the run view', Boolean(completed));
   await page.goto(`${base}/#/runs`);
-  await page.getByText('circular-quick').first().waitFor({ state: 'visible' });
+  await page.locator('table.runs').getByText('circular-quick').first().waitFor({ state: 'visible' });
   check('the runs list shows it', true);
   await screenshot(page, 'token-logged-in');
 

@@ -48,7 +48,25 @@ export const api = {
   health: () => request('GET', '/api/health'),
   presets: async () => (await request('GET', '/api/presets')).presets,
   preset: (name) => request('GET', `/api/presets/${encodeURIComponent(name)}`),
-  runs: async () => (await request('GET', '/api/runs')).runs,
+  /**
+   * One page of the runs list, filtered and sorted on the server: `params` among limit,
+   * offset, status, preset, study, q, sort, order (empty values are left out).
+   * Resolves to {runs, total, offset, limit, next}.
+   */
+  runsPage: (params) => {
+    const query = new URLSearchParams();
+    for (const [key, value] of Object.entries(params)) {
+      if (value !== undefined && value !== null && value !== '') query.set(key, String(value));
+    }
+    return request('GET', `/api/runs?${query}`);
+  },
+  /** [{name, runs, by_status, status, progress, runs_url, source}]: launched and imported studies. */
+  studies: async () => (await request('GET', '/api/studies')).studies,
+  /** One study; a launched one with its spec and run_parameters. */
+  study: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}`),
+  /** A sweep spec ({name, base, vary, mode}); resolves to the new study. */
+  launchStudy: (spec) => request('POST', '/api/studies', { body: spec }),
+  cancelStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/cancel`),
   run: (id) => request('GET', runPath(id)),
   /** A scene object or {preset: NAME}; resolves to the new run's id. */
   createRun: async (body) => (await request('POST', '/api/runs', { body })).id,

@@ -66,6 +66,7 @@ export class ChartPanel {
       cursor: { drag: { x: true, y: false } },
       hooks: { draw: [(u) => this.drawMarker(u)] },
     }, [[], ...spec.series.map(() => [])], this.body);
+    this.element.uplot = this.plot;  // what is plotted (uplot.data), for the tests to read
 
     this.resizeObserver = new ResizeObserver(() => {
       const width = this.body.clientWidth;

@@ -1,10 +1,13 @@
-// The dashboard's entry: a hash router over the views (#/runs, #/new, #/run/ID, #/compare)
+// The dashboard's entry: a hash router over the views (#/runs, #/new, #/run/ID, #/compare,
+// #/studies, #/studies/NAME)
 // and the server's health in the top bar.
 import { api } from './api.js';
 import { runsView } from './views/runs_view.js';
 import { newRunView } from './views/new_run_view.js';
 import { runView } from './views/run_view.js';
 import { compareView } from './views/compare_view.js';
+import { studiesView } from './views/studies_view.js';
+import { studyView } from './views/study_view.js';
 import { loginFromAddressBar } from './login.js';
 
 const HEALTH_MS = 10000;
@@ -20,8 +23,15 @@ function route() {
   viewRoot.replaceChildren();
   let nav = 'runs';
   const runMatch = /^\/run\/(\d+)$/.exec(path);
+  const studyMatch = /^\/studies\/([^/]+)$/.exec(path);
   if (runMatch) {
     current = runView(viewRoot, Number(runMatch[1]));
+  } else if (studyMatch) {
+    nav = 'studies';
+    current = studyView(viewRoot, decodeURIComponent(studyMatch[1]));
+  } else if (path === '/studies') {
+    nav = 'studies';
+    current = studiesView(viewRoot);
   } else if (path === '/new') {
     nav = 'new';
     current = newRunView(viewRoot, params);
@@ -29,7 +39,7 @@ function route() {
     nav = 'compare';
     current = compareView(viewRoot, params);
   } else {
-    current = runsView(viewRoot);
+    current = runsView(viewRoot, params);
   }
   for (const link of document.querySelectorAll('[data-nav]')) link.classList.toggle('active', link.dataset.nav === nav);
 }

@@ -1,5 +1,5 @@
 // The run view's header: name, status, progress, facts (stage, preset, particles, timing,
-// the estimate the run was queued with, peak φ_mob) and the actions. Built once and updated
+// the estimate the run was queued with, peak φ_mob, the run it started from) and the actions. Built once and updated
 // in place every second while the run is live, so a click on Cancel is never lost to a
 // re-render.
 import { api } from './api.js';
@@ -18,13 +18,15 @@ export class RunHeader {
     this.cancel = h('button', { type: 'button', class: 'danger', onclick: onCancel }, 'Cancel run');
     // An interrupted run (server stopped or killed, wall-time limit) goes on from its checkpoint.
     this.resume = h('button', { type: 'button', onclick: onResume, hidden: true }, 'Resume run');
+    // A finished run's specimen, kept at the end of each stage: another test on it (start_from).
+    this.branch = h('a', { class: 'button', hidden: true }, 'New test on this specimen');
     this.csv = h('a', { class: 'button' }, 'Download CSV');
     this.compare = h('a', { class: 'button' }, 'Compare…');
     this.element = h('div', { class: 'run-header' },
       this.title, this.status,
       h('span', { class: 'progress', title: 'progress' }, h('span', { class: 'bar' }, this.bar), this.progressLabel),
       this.facts,
-      h('span', { class: 'actions' }, this.cancel, this.resume, this.csv, this.compare),
+      h('span', { class: 'actions' }, this.cancel, this.resume, this.branch, this.csv, this.compare),
       this.warnings);
     parent.append(this.element);
   }
@@ -55,7 +57,8 @@ export class RunHeader {
     this.progressLabel.textContent = percent(progress);
     this.facts.textContent = [
       stage ? `stage ${stage}` : null,
-      run.preset ? `preset ${run.preset}` : 'custom scene',
+      run.origin === 'lammps' ? 'imported from LAMMPS' : run.preset ? `preset ${run.preset}` : 'custom scene',
+      run.started_from ? `from run #${run.started_from.run_id}'s ${run.started_from.stage}` : null,
       `${run.particles} particles`,
       `created ${localTime(run.created_at)}`,
       timing,
@@ -69,6 +72,8 @@ export class RunHeader {
       `${w.step != null ? ` at step ${w.step}` : ''}: ${w.meaning}`)));
     this.cancel.hidden = !running;
     this.resume.hidden = running || !run.resumable;
+    this.branch.hidden = running || !(run.specimen_stages?.length > 0);
+    this.branch.href = `#/new?from=${run.id}`;
     this.csv.href = api.csvUrl(run.id);
     this.csv.download = `grainlab-run-${run.id}-series.csv`;
     this.compare.href = `#/compare?ids=${run.id}`;

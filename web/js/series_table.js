@@ -73,7 +73,8 @@ export class SeriesTable {
  * The names of a scene's shearing stages (biaxial, as the paper, or a loading path): the rows
  * plotted against axial strain or rotation angle.
  */
-const SHEARING = ['biaxial', 'rotation', 'cyclic', 'simple_shear'];
+// lammps_deformation: an imported LAMMPS run's strain-controlled cell deformation.
+const SHEARING = ['biaxial', 'rotation', 'cyclic', 'simple_shear', 'lammps_deformation'];
 export function shearingStages(scene) {
   const names = new Set();
   for (const stage of scene?.stages ?? []) if (SHEARING.includes(stage.type)) names.add(stage.name ?? stage.type);

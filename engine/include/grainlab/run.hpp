@@ -60,6 +60,11 @@ struct RunSummary {
   /// resumeRun: said when the newest checkpoint could not be read and the one before it was
   /// used (not part of summary.json: the outputs are the same either way).
   std::string resumeNote;
+  /// resumeRun: the step and simulated time (s) of the checkpoint the run continued from; -1
+  /// and 0 for a run that started afresh. The sign that a resume used its checkpoint (not part
+  /// of summary.json either).
+  std::int64_t resumedFromStep = -1;
+  double resumedFromTime = 0;
 };
 
 class RunObserver {

@@ -109,11 +109,14 @@ struct OutputSpec {
 
 /// "start_from": the prepared specimen a run starts from instead of running its own first
 /// stages (grainlab/prepared_specimen.hpp). Either `run` (a run's directory) with `stage`
-/// (empty: the stage before the scene's first shearing stage), or `checkpoint` (a file).
+/// (empty: the stage before the scene's first shearing stage), or `checkpoint` (a file), or
+/// `run_id` with `stage`: a run stored by `grainlab serve`, which only the server resolves (it
+/// then sets `checkpoint` to that run's stage checkpoint in its own storage).
 struct StartFrom {
   std::string run;
   std::string stage;
   std::string checkpoint;
+  std::int64_t runId = 0;  ///< 0: none
 };
 
 struct Scene {

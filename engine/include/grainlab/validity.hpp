@@ -56,7 +56,9 @@ ValidityAssessment assessSceneAlone(const Scene& scene);
 /// The envelope of `scene` on `world` (built from it, not yet stepped), with its cost.
 /// `maxSeconds`: the cost's hard limit (RunLimits::maxSeconds; infinite: none).
 ValidityAssessment assessValidity(const Scene& scene, const World& world, const RunCost& cost, double maxSeconds);
-/// The same, building the world first (as estimateSceneCost).
+/// The same, building the world first (as estimateSceneCost). A scene with start_from is
+/// assessed as runScene would run it: on its prepared specimen, counting only the stages after
+/// it; a specimen that is missing or does not fit throws SceneError naming start_from's field.
 ValidityAssessment assessSceneValidity(const Scene& scene, double maxSeconds);
 
 /// The scene field most likely responsible for a run that failed for physical reasons (a

@@ -48,16 +48,20 @@ TEST(MeanInterval, OneValueHasNoIntervalAndIdenticalValuesAZeroWidthOne) {
 }
 
 TEST(MeanInterval, AxialDirectionsAverageAcrossTheWrap) {
-  // 178° and 4° are 6° apart through 0°: mean 1°, offsets ∓3°, half-width 12.706 · 3 = 38.1°.
-  const MeanInterval m = axialMeanInterval({178, 4});
-  EXPECT_NEAR(m.mean, 1, 1e-9);
-  EXPECT_NEAR(m.high - m.mean, 12.706 * 3, 1e-2);
-  EXPECT_NEAR(m.mean - m.low, 12.706 * 3, 1e-2);
+  // 178°, 4° and 2° lie within 6° of each other through 0°: mean 1.33°, and a symmetric
+  // interval about it (its width by hand in range_intervals_test.cpp).
+  const MeanInterval m = axialMeanInterval({178, 4, 2});
+  EXPECT_NEAR(m.mean, 4.0 / 3.0, 1e-2);
+  EXPECT_NEAR(m.high - m.mean, m.mean - m.low, 1e-9);
+  EXPECT_GT(m.halfWidth(), 3.0);
+  EXPECT_LT(m.halfWidth(), 90.0);
 }
 
-TEST(EnsembleBand, NarrowsWithMoreSeedsAndVanishesForIdenticalRuns) {
+TEST(EnsembleBand, HalfWidthIsTTimesTheSpreadOverRootNAndVanishesForIdenticalRuns) {
   // Eight synthetic runs whose a_c differs by a fixed offset per seed (spread ±0.02 around the
-  // closed form); the interval over the first 2, 4 and 8 shrinks roughly as t/√n.
+  // closed form). At every strain the runs differ only by the offsets, so the band's half-width
+  // over the first n runs is t_0.975(n−1)·s_n/√n with s_n the offsets' sample deviation:
+  // by hand 12.706·0.020506/√2 = 0.18424, 3.182·0.015588/√4 = 0.024801, 2.365·0.014675/√8 = 0.012271.
   const double offsets[] = {0.012, -0.017, 0.004, 0.019, -0.008, -0.003, 0.015, -0.020};
   std::vector<AssemblyResult> runs;
   for (int s = 0; s < 8; ++s) {
@@ -72,10 +76,18 @@ TEST(EnsembleBand, NarrowsWithMoreSeedsAndVanishesForIdenticalRuns) {
     EXPECT_EQ(b.perRun.size(), n);
     return b.stats.at(10).halfWidth();
   };
-  const double w2 = widthOver(2), w4 = widthOver(4), w8 = widthOver(8);
-  EXPECT_GT(w2, w4);
-  EXPECT_GT(w4, w8);
-  EXPECT_GT(w8, 0);
+  // t quantiles from a statistics table; the sample deviation by its definition.
+  auto expected = [&](size_t n, double t) {
+    double mean = 0, squares = 0;
+    for (size_t s = 0; s < n; ++s) mean += offsets[s] / n;
+    for (size_t s = 0; s < n; ++s) squares += (offsets[s] - mean) * (offsets[s] - mean);
+    return t * std::sqrt(squares / (n - 1)) / std::sqrt(static_cast<double>(n));
+  };
+  // 1e-3 relative: the tables' three decimals of t.
+  EXPECT_NEAR(widthOver(2), expected(2, 12.706), 1e-3 * 0.18424);
+  EXPECT_NEAR(widthOver(4), expected(4, 3.182), 1e-3 * 0.024801);
+  EXPECT_NEAR(widthOver(8), expected(8, 2.365), 1e-3 * 0.012271);
+  EXPECT_NEAR(expected(8, 2.365), 0.012271, 1e-6);  // the hand figure above
 
   std::vector<AssemblyResult> same(5, syntheticRun(AssemblyKind::Circular));
   for (size_t s = 0; s < same.size(); ++s) same[s].seed = static_cast<int>(s) + 1;

@@ -128,6 +128,21 @@ TEST(BeddingFabric, TheBeddingSignaturesHold) {
   EXPECT_EQ(f.verdict, Verdict::Holds);
 }
 
+TEST(BeddingFabric, TheA_cMagnitudeForSixtyDegreesIsMeasuredBesideThePapersValue) {
+  // a_c = 0.1 + 2ε: over the second half (ε from 0.1 to 0.2) its mean is 0.1 + 2 · 0.15 = 0.4.
+  const std::vector<AssemblyResult> runs{bedded(30), bedded(60)};
+  const Finding f = findBeddingFabric(runs);
+  int rows = 0;
+  for (const Check& c : f.checks) {
+    if (c.quantity != "mean a_c over the second half of the shearing") continue;
+    ++rows;
+    EXPECT_EQ(c.subject.rfind("α = 60°", 0), 0u) << c.subject;
+    EXPECT_NEAR(c.value, 0.4, 1e-12);
+    EXPECT_TRUE(c.diagnostic);
+  }
+  EXPECT_EQ(rows, 1);
+}
+
 TEST(BeddingFabric, BranchDirectionsAwayFromTheBeddingDoNotHold) {
   AssemblyResult a = bedded(30);
   setColumn(a, "theta_lt_deg", [](double) { return 80.0; });

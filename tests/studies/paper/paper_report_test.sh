@@ -5,6 +5,12 @@
 # rows, mean and interval columns and no nan/inf cell; each seed's run has its own folder; and
 # --report-only rebuilds the same findings from the folders. Twelve quick runs: the CI's
 # longest test (about 2× the single-seed one it replaces).
+# Verdicts are free to go either way where the physics decides, but two follow from the code
+# alone, run by run: the contact stress is symmetric (every particle in moment equilibrium at
+# the quasi-static rates of the presets: σ12 − σ21 below 1% of p), and for discs the branch
+# vector is r·n, so a_lt vanishes to rounding and a_ln is only the overlaps' trace, (δ/2r)·a_n,
+# below 1e-3 at 300 kPa. Each run must show them, and the merged findings must not deny them
+# (two seeds' t-interval, 12.7 standard errors wide, may leave them "not resolved").
 set -euo pipefail
 grainlab=$1
 tmp=$(mktemp -d)
@@ -58,6 +64,7 @@ if "<svg" not in html:
     fail("report.html has no inline SVG")
 
 verdicts = {"holds", "does not hold", "inconclusive", "not resolved at 2 seeds"}
+decided = {1: {"holds", "not resolved at 2 seeds"}}  # stress symmetry, never "does not hold"
 for n in range(1, 9):
     m = re.search(r'<tr class="finding" id="finding-%d">(.*?)</tr>' % n, html, re.S)
     if not m:
@@ -65,6 +72,8 @@ for n in range(1, 9):
     v = re.search(r'<td class="verdict[^"]*">([^<]*)</td>', m.group(1))
     if not v or v.group(1) not in verdicts:
         fail(f"finding {n} has no verdict")
+    if n in decided and v.group(1) not in decided[n]:
+        fail(f"finding {n}: {v.group(1)!r}, but the code alone allows only {sorted(decided[n])}")
 
 figures = ["fig%02d" % k for k in range(6, 16)] + ["roses"]
 for name in figures + ["runs", "findings"]:
@@ -104,6 +113,27 @@ if not judged:
 for r in judged:
     if not float(r["ci_low"]) <= float(r["value"]) <= float(r["ci_high"]):
         fail(f"finding {r['number']} {r['subject']}: mean {r['value']} outside its interval")
+# The checks the code alone decides: symmetry for each of the six assemblies, and the discs'
+# branch-vector anisotropy.
+symmetry = [r for r in findings if r["number"] == "1"]
+branch = [r for r in findings if r["number"] == "2" and "a_ln, a_lt" in r["subject"]]
+for r in symmetry + branch:
+    if r["check_verdict"] == "does not hold" or not float(r["value"]) < float(r["holds_to"]):
+        fail(f"finding {r['number']} {r['subject']}: {r['check_verdict']} ({r['measured']}), which the code alone decides")
+if len(symmetry) != 6 or len(branch) != 1:
+    fail(f"{len(symmetry)} symmetry checks (6 assemblies) and {len(branch)} disc branch checks (1)")
+for preset in ["circular", "elongated-random"] + ["elongated-bedding-%d" % a for a in (0, 30, 60, 90)]:
+    for seed in (1, 2):
+        path = os.path.join(out, "runs", preset + "-quick", f"seed-{seed}", "series.csv")
+        rows = [r for r in csv.DictReader(open(path, encoding="utf-8")) if r["stage"] == "shearing"]
+        asym = max(abs(float(r["sigma12"]) - float(r["sigma21"])) / float(r["p"]) for r in rows if float(r["p"]) > 0)
+        if not asym < 0.01:
+            fail(f"{preset}-quick seed {seed}: max |σ12 − σ21|/p = {asym} over the shearing, not below 1%")
+        if preset == "circular":
+            lt = max(abs(float(r["a_lt"])) for r in rows)
+            ln = max(abs(float(r["a_ln"])) for r in rows)
+            if not (lt < 1e-9 and ln < 1e-3):
+                fail(f"circular-quick seed {seed}: a_lt up to {lt} (a disc's l_t is zero: rounding only), a_ln up to {ln} (< 1e-3)")
 
 runs = list(csv.DictReader(open(os.path.join(out, "runs.csv"), encoding="utf-8")))
 if len(runs) != 12:

@@ -7,6 +7,9 @@ import { COMPARE_CHARTS, X_AXES, chartDomain } from '../chart_specs.js';
 import { SeriesTable, shearingStages } from '../series_table.js';
 import { ensembleBand } from '../ensemble_stats.js';
 
+// The picker offers this many of the newest runs (and the chosen ones besides).
+const PICKER_RUNS = 100;
+
 export function compareView(root, params) {
   const chosen = new Set((params.get('ids') ?? '').split(',').map(Number).filter((n) => Number.isInteger(n) && n > 0));
   const picker = h('div', { class: 'compare-picker' });
@@ -117,14 +120,27 @@ export function compareView(root, params) {
   }
 
   (async () => {
+    // The newest runs, and the chosen ones among older runs: never the whole list, which a
+    // study makes thousands long (older runs are ticked from the runs list's pages).
     let runs = [];
+    let total = 0;
     try {
-      runs = await api.runs();
+      const page = await api.runsPage({ limit: PICKER_RUNS });
+      total = page.total;
+      const listed = new Set(page.runs.map((run) => run.id));
+      const older = await Promise.all([...chosen].filter((id) => !listed.has(id))
+        .map((id) => api.run(id).catch(() => null)));  // null: deleted since the link was made
+      runs = [...page.runs, ...older.filter(Boolean).sort((a, b) => b.id - a.id)];
     } catch (error) {
       status.textContent = `Cannot list the runs: ${error.message}`;
     }
     if (destroyed) return;
     if (!runs.length) status.textContent = 'No runs yet.';
+    else if (total > PICKER_RUNS) {
+      picker.before(h('div', { class: 'hint' },
+        `The ${PICKER_RUNS} newest of ${total} runs, and those ticked; tick older ones in the `,
+        h('a', { href: '#/runs' }, 'runs list'), ' and press Compare selected.'));
+    }
     const known = new Set(runs.map((run) => run.id));
     for (const id of chosen) if (!known.has(id)) chosen.delete(id);  // deleted since the link was made
     replaceChildren(picker, runs.map((run) => h('label', {},

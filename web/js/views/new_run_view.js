@@ -2,6 +2,9 @@
 // the key parameters or the whole scene JSON, submit. An unchanged preset is sent as
 // {"preset": NAME} so the run keeps its preset's name; an edited one as the whole scene.
 // The API's validation errors appear beside the field they name.
+// #/new?from=ID is a new test on run ID's specimen: its scene with "start_from": {"run_id": ID,
+// "stage": S} (S one of the stages whose end the run kept; by default the one before the first
+// shearing stage), so only the stages after S run; the specimen's own settings are not shown.
 import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
 import {
@@ -9,6 +12,7 @@ import {
 } from '../scene_form.js';
 
 const DEFAULT_PRESET = 'circular-quick';
+const SHEARING = ['biaxial', 'rotation', 'cyclic', 'simple_shear'];
 
 export function newRunView(root, params) {
   const presetSelect = h('select', { id: 'preset', 'aria-label': 'Preset', onchange: () => loadPreset(presetSelect.value) });
@@ -19,15 +23,22 @@ export function newRunView(root, params) {
   const jsonBox = h('textarea', { class: 'scene-json', spellcheck: 'false', 'aria-label': 'Scene JSON', oninput: () => jsonEdited() });
   const jsonError = h('div', { class: 'field-error' });
   const jsonDetails = h('details', { open: true }, h('summary', {}, 'Scene JSON (every parameter; edits here update the form)'), jsonBox, jsonError);
+  const fromId = params.has('from') ? Number(params.get('from')) : null;
+  const specimenStage = h('select', { id: 'specimen-stage', 'aria-label': 'Start after stage', onchange: () => setSpecimenStage(specimenStage.value) });
+  const specimenText = h('span');
   const form = h('form', { class: 'panel', novalidate: true, onsubmit: (event) => { event.preventDefault(); start(); } },
     h('div', { class: 'form-grid' },
-      h('label', { for: 'preset' }, 'Preset'),
-      h('div', { class: 'field-input' }, presetSelect, description)),
+      fromId === null ? h('label', { for: 'preset' }, 'Preset') : h('label', { for: 'specimen-stage' }, 'Specimen'),
+      fromId === null
+        ? h('div', { class: 'field-input' }, presetSelect, description)
+        : h('div', { class: 'field-input specimen' }, specimenText, specimenStage,
+          h('div', { class: 'hint' }, 'the stages up to this one are the specimen\'s; the later ones run on it. ',
+            h('a', { href: '#/new' }, 'Start from a preset instead')), description)),
     grid,
     h('div', { class: 'form-actions' }, submit, h('span', { class: 'hint' }, 'Quick presets finish in seconds; the full ones take much longer.')),
     formError);
   replaceChildren(root,
-    h('div', { class: 'view-title' }, h('h2', {}, 'New run')),
+    h('div', { class: 'view-title' }, h('h2', {}, fromId === null ? 'New run' : `New test on run #${fromId}'s specimen`)),
     h('div', { class: 'new-run' }, form, h('div', { class: 'panel' }, jsonDetails)));
 
   let presetName = null;
@@ -60,13 +71,23 @@ export function newRunView(root, params) {
     replaceChildren(grid, children);
   }
 
+  // On a prepared specimen its particles, material and engine are set: the server refuses a
+  // scene that differs from them (start_from.run_id).
+  const specimenKeys = new Set(['seed', 'engine']);
+  let section = null;
+  for (const field of SCENE_FIELDS) {
+    if (field.section) section = field.section;
+    else if (section === 'Material' || section === 'Specimen') specimenKeys.add(field.key);
+  }
+  const shown = (field) => fieldVisible(field, scene) && !(fromId !== null && specimenKeys.has(field.key));
+
   /** Shows the scene's values; hides the fields the scene has no place for. */
   function fillForm() {
     description.textContent = describeScene(scene);
     for (const field of SCENE_FIELDS) {
       if (field.section) continue;
       const { label, box, input } = inputs.get(field.key);
-      const visible = fieldVisible(field, scene);
+      const visible = shown(field);
       label.hidden = !visible;
       box.hidden = !visible;
       if (visible && document.activeElement !== input) input.value = displayValue(field, scene);
@@ -74,7 +95,7 @@ export function newRunView(root, params) {
     for (const section of grid.querySelectorAll('.form-section')) {
       const fields = SCENE_FIELDS.slice(SCENE_FIELDS.findIndex((f) => f.section === section.dataset.section) + 1);
       const end = fields.findIndex((f) => f.section);
-      section.hidden = !(end < 0 ? fields : fields.slice(0, end)).some((f) => fieldVisible(f, scene));
+      section.hidden = !(end < 0 ? fields : fields.slice(0, end)).some(shown);
     }
   }
 
@@ -140,6 +161,42 @@ export function newRunView(root, params) {
     }
   }
 
+  /** run `fromId`'s scene, to start from the end of one of the stages whose end it kept. */
+  async function loadSpecimen() {
+    try {
+      const parent = await api.run(fromId);
+      if (destroyed) return;
+      const stages = parent.scene?.stages ?? [];
+      // The parser names an unnamed stage by its type (free by default).
+      const nameOf = (stage) => stage.name ?? stage.type ?? 'free';
+      // A stage with a later stage to run after it.
+      const kept = (parent.specimen_stages ?? []).filter((name) => {
+        const k = stages.findIndex((stage) => nameOf(stage) === name);
+        return k >= 0 && k + 1 < stages.length;
+      });
+      if (!kept.length) throw new Error(`run #${fromId} kept no stage's end to start from`);
+      const firstShearing = stages.findIndex((stage, k) => k > 0 && SHEARING.includes(stage.type));
+      const preparation = firstShearing > 0 ? nameOf(stages[firstShearing - 1]) : null;
+      specimenText.textContent = `run #${fromId} ${parent.name} (${parent.particles} particles), at the end of stage`;
+      replaceChildren(specimenStage, kept.map((name) => h('option', { value: name }, name)));
+      specimenStage.value = kept.includes(preparation) ? preparation : kept[kept.length - 1];
+      scene = structuredClone(parent.scene);
+      presetJson = '';
+      setSpecimenStage(specimenStage.value);
+    } catch (error) {
+      formError.hidden = false;
+      formError.textContent = `Cannot start from run #${fromId}: ${error.message}`;
+    }
+  }
+
+  function setSpecimenStage(stage) {
+    if (!scene) return;
+    scene.start_from = { run_id: fromId, stage };
+    clearErrors();
+    fillForm();
+    showJson();
+  }
+
   async function start() {
     if (!scene) return;
     if (jsonBox.classList.contains('invalid')) {
@@ -174,7 +231,8 @@ export function newRunView(root, params) {
   }
 
   buildFields();
-  (async () => {
+  if (fromId !== null) loadSpecimen();
+  else (async () => {
     try {
       const presets = await api.presets();
       if (destroyed) return;

@@ -155,7 +155,7 @@ std::string seedsText(const std::vector<const Ensemble*>& chosen) {
   }
   if (hi <= 1) return " One seed per assembly: no interval is drawn.";
   return " Each line is the mean over " + (lo == hi ? std::to_string(hi) : std::to_string(lo) + "-" + std::to_string(hi)) +
-         " seeds (different random packings), the shading its 95 % t-interval, the pale lines the single runs.";
+         " seeds (different random packings), the shading its 95 % interval (circular for directions), the pale lines the single runs.";
 }
 
 const std::string kBandCsv = " The CSV holds, per assembly and strain, each quantity's mean over the seeds and its 95 % "

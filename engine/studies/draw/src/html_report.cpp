@@ -81,11 +81,13 @@ CsvTable findingsTable(const std::vector<Finding>& findings) {
   // One row per check: its quantity's value (the mean over seeds), 95 % interval and verdict,
   // beside its finding's claim and overall verdict.
   CsvTable t({"number", "claim", "criterion", "verdict", "subject", "quantity", "value", "seeds", "ci_low", "ci_high",
-              "holds_from", "holds_to", "check_verdict", "measured", "note"});
+              "holds_from", "holds_to", "check_verdict", "measured", "note", "interval", "seeds_to_resolve"});
   for (const Finding& f : findings) {
     for (const Check& c : f.checks) {
       t.addRow({f.number, f.claim, f.criterion, verdictText(f.verdict, seedsOf(f)), c.subject, c.quantity, c.value,
-                c.seeds, c.ciLow, c.ciHigh, c.holdsFrom, c.holdsTo, checkVerdict(c), c.measured, f.note});
+                c.seeds, c.ciLow, c.ciHigh, c.holdsFrom, c.holdsTo, checkVerdict(c), c.measured, f.note,
+                intervalMethodText(c.interval, c.range.low, c.range.high),
+                c.seedsToResolve > 0 ? CsvCell(c.seedsToResolve) : CsvCell(std::nan(""))});
     }
   }
   return t;
@@ -117,7 +119,8 @@ std::string renderReportHtml(std::span<const AssemblyResult> runs, const std::ve
 
   if (context.seeds > 1) {
     o += "<p>Each assembly ran with seeds 1-" + std::to_string(context.seeds) +
-         " (independent random packings); figures show the mean over the seeds with its 95 % t-interval, and each "
+         " (independent random packings); figures show the mean over the seeds with its 95 % interval (Student's t, cut at the "
+         "ends of a bounded quantity's range; circular for directions), and each "
          "finding is judged on that interval: it holds when the whole interval meets the criterion, does not hold "
          "when none of it does, and is not resolved at that number of seeds when the interval straddles the "
          "threshold.</p>\n";

@@ -1,9 +1,11 @@
 #include "grainlab/studies/paper/ensemble_stats.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
+#include <numbers>
 
-#include "grainlab/analysis/angles.hpp"
 #include "grainlab/studies/paper/series_stats.hpp"
 
 namespace grainlab::report {
@@ -32,37 +34,91 @@ MeanInterval meanInterval(const std::vector<double>& values) {
     ++m.n;
   }
   const double nan = std::nan("");
-  m.low = m.high = nan;
+  m.low = m.high = m.sd = nan;
   if (m.n == 0) {
     m.mean = nan;
     return m;
   }
   m.mean = first + offsets / m.n;
+  m.sd = nan;
   if (m.n < 2) return m;
   double squares = 0;
   for (double v : values) {
     if (std::isfinite(v)) squares += (v - m.mean) * (v - m.mean);
   }
-  const double half = studentT975(m.n - 1) * std::sqrt(squares / (m.n - 1) / m.n);
+  m.sd = std::sqrt(squares / (m.n - 1));
+  const double half = studentT975(m.n - 1) * m.sd / std::sqrt(m.n);
   m.low = m.mean - half;
   m.high = m.mean + half;
+  m.method = IntervalMethod::StudentT;
   return m;
 }
 
-MeanInterval axialMeanInterval(const std::vector<double>& thetasDeg) {
-  const double centre = axialMeanDeg(thetasDeg);
-  std::vector<double> offsets;
-  for (double t : thetasDeg) {
-    if (std::isfinite(t)) offsets.push_back(analysis::wrapAxialDeg(t - centre));
+int seedsToExclude(double mean, double sd, double threshold) {
+  const double gap = std::abs(mean - threshold);
+  if (!(gap > 0) || !std::isfinite(sd)) return -1;
+  for (int n = 2; n <= 100000; ++n) {
+    if (studentT975(n - 1) * sd / std::sqrt(static_cast<double>(n)) < gap) return n;
   }
-  MeanInterval m = meanInterval(offsets);
+  return -1;
+}
+
+MeanInterval meanIntervalInRange(const std::vector<double>& values, ValueRange range) {
+  MeanInterval m = meanInterval(values);
+  if (!m.hasInterval() || (m.low >= range.low && m.high <= range.high)) return m;
+  m.low = std::max(m.low, range.low);
+  m.high = std::min(m.high, range.high);
+  m.method = IntervalMethod::StudentTInRange;
+  return m;
+}
+
+std::string intervalMethodText(IntervalMethod method, double rangeLow, double rangeHigh) {
+  switch (method) {
+    case IntervalMethod::None: return "none";
+    case IntervalMethod::StudentT: return "t";
+    case IntervalMethod::Circular: return "circular";
+    case IntervalMethod::StudentTInRange: {
+      const auto end = [](double v) {
+        if (std::isinf(v)) return std::string(v > 0 ? "∞" : "−∞");
+        std::string s = std::to_string(v);
+        s.erase(s.find_last_not_of('0') + 1);
+        if (s.back() == '.') s.pop_back();
+        return s;
+      };
+      return "t, cut to [" + end(rangeLow) + ", " + end(rangeHigh) + "]";
+    }
+  }
+  return "none";
+}
+
+MeanInterval axialMeanInterval(const std::vector<double>& thetasDeg) {
+  MeanInterval m;
+  const double nan = std::nan("");
+  m.mean = m.low = m.high = m.sd = nan;
+  std::vector<double> doubled;  // 2θ in radians
+  for (double t : thetasDeg) {
+    if (std::isfinite(t)) doubled.push_back(2.0 * t * std::numbers::pi / 180.0);
+  }
+  m.n = static_cast<int>(doubled.size());
   if (m.n == 0) return m;
-  // The circular mean and the mean offset differ slightly when the spread is wide; centre the
-  // interval on the circular mean the charts draw.
-  const double half = m.hasInterval() ? m.halfWidth() : std::nan("");
-  m.mean = centre;
-  m.low = centre - half;
-  m.high = centre + half;
+  m.mean = axialMeanDeg(thetasDeg);
+  if (m.n < 2) return m;
+  std::complex<double> resultant = 0;
+  for (double a : doubled) resultant += std::polar(1.0, a);
+  const double n = m.n, meanLength = std::abs(resultant) / n;
+  const double meanDoubled = 2.0 * m.mean * std::numbers::pi / 180.0;
+  double secondMoment = 0;  // ρ̂₂ = (1/n) Σ cos 2(2θ − mean of 2θ)
+  for (double a : doubled) secondMoment += std::cos(2.0 * (a - meanDoubled));
+  secondMoment /= n;
+  // Fisher's σ̂² = (1 − ρ̂₂)/(2n R̄²) uses moments over n; scaled by n/(n − 1) it becomes, for
+  // concentrated directions, s²/n of the offsets with the same n − 1 as Student's t.
+  const double standardError = std::sqrt(std::max(0.0, 1.0 - secondMoment) / (2.0 * (n - 1) * meanLength * meanLength));
+  const double reach = studentT975(m.n - 1) * standardError;
+  // Half of the doubled angle's half-width; the whole period where the data cannot place it.
+  const double half = meanLength > 0 && reach < 1 ? 0.5 * std::asin(reach) * 180.0 / std::numbers::pi : 90.0;
+  m.low = m.mean - half;
+  m.high = m.mean + half;
+  m.method = IntervalMethod::Circular;
   return m;
 }
 

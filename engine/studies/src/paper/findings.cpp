@@ -50,6 +50,16 @@ Check measuredCheck(std::string subject, std::string quantity, double value, dou
   return c;
 }
 
+// The values a check's quantity can take, so that its ensemble interval stays inside them.
+constexpr ValueRange kNonNegative{0.0, kInf};
+constexpr ValueRange kShare{0.0, 1.0};
+constexpr ValueRange kAxialDistance{0.0, 90.0};      // |θ − θ'| the shorter way round the 180° period
+constexpr ValueRange kSignedAxialAngle{-90.0, 90.0};  // ω: an axial difference
+Check within(ValueRange range, Check c) {
+  c.range = range;
+  return c;
+}
+
 // The row's noise floor from its contact count.
 double floorAt(const AssemblyResult& a, size_t row) { return noiseFloor(a.shearing.at("contacts", row)); }
 
@@ -175,8 +185,8 @@ Finding findStressSymmetry(std::span<const AssemblyResult> runs) {
       if (p[r] > 0) ratio.push_back(std::abs(s12[r] - s21[r]) / p[r]);
     }
     const double worst = finiteMax(ratio);
-    f.checks.push_back(measuredCheck(a->label(), "max |σ12 − σ21|/p", worst, -kInf, below(kAsymmetryOverP),
-                                     "max |σ12 − σ21|/p = " + general(worst, 2)));
+    f.checks.push_back(within(kNonNegative, measuredCheck(a->label(), "max |σ12 − σ21|/p", worst, -kInf, below(kAsymmetryOverP),
+                                     "max |σ12 − σ21|/p = " + general(worst, 2))));
   }
   return finish(std::move(f));
 }
@@ -195,9 +205,9 @@ Finding findCircularFabric(std::span<const AssemblyResult> runs) {
   for (const AssemblyResult* a : chosen) {
     const double ln = finiteMax(a->shearing.column("a_ln")), lt = finiteMax(a->shearing.column("a_lt"));
     const double worst = std::max(ln, lt);
-    f.checks.push_back(measuredCheck(a->label() + ": a_ln, a_lt", "max(a_ln, a_lt)", worst, -kInf,
+    f.checks.push_back(within(kNonNegative, measuredCheck(a->label() + ": a_ln, a_lt", "max(a_ln, a_lt)", worst, -kInf,
                                      kDiscBranchAnisotropy,
-                                     "max a_ln = " + general(ln, 2) + ", max a_lt = " + general(lt, 2)));
+                                     "max a_ln = " + general(ln, 2) + ", max a_lt = " + general(lt, 2))));
 
     const auto c = meaningfulDirections(*a, "c"), n = meaningfulDirections(*a, "n"), t = meaningfulDirections(*a, "t");
     std::vector<double> spread;
@@ -206,26 +216,26 @@ Finding findCircularFabric(std::span<const AssemblyResult> runs) {
       spread.push_back(std::max({axialDistanceDeg(c[r], n[r]), axialDistanceDeg(c[r], t[r]), axialDistanceDeg(n[r], t[r])}));
     }
     const double median = finiteMedian(spread);
-    f.checks.push_back(measuredCheck(
+    f.checks.push_back(within(kAxialDistance, measuredCheck(
         a->label() + ": θ_c, θ_n, θ_t coincide", "median spread (°)", median, -kInf, kCoincideDeg,
         std::isfinite(median) ? "median spread " + deg(median) + " over " + std::to_string(spread.size()) + " of " +
                                     std::to_string(c.size()) + " samples"
-                              : "no sample with all three a_k above twice the noise floor"));
+                              : "no sample with all three a_k above twice the noise floor")));
 
     // The turn in two parts, each one number: away from 90° at the start, at 90° at the end.
     const double start = startDirection(*a, "c"), end = endDirection(*a, "c");
     const double d0 = axialDistanceDeg(start, 90), d1 = axialDistanceDeg(end, 90);
-    f.checks.push_back(measuredCheck(
+    f.checks.push_back(within(kAxialDistance, measuredCheck(
         a->label() + ": θ_c(0) away from 90°", "|θ_c(0) − 90°| (°)", d0, above(kAwayFromAxisDeg), kInf,
         std::isfinite(start) ? "θ_c(0) = " + deg(start)
                              : "a_c = " + general(a->shearing.at("a_c", 0), 2) +
                                    " at ε22 = 0 is below twice the noise floor (" +
                                    general(kDirectionNoiseFactor * floorAt(*a, 0), 2) +
-                                   "): the starting direction means nothing"));
-    f.checks.push_back(measuredCheck(
+                                   "): the starting direction means nothing")));
+    f.checks.push_back(within(kAxialDistance, measuredCheck(
         a->label() + ": θ_c turns to 90°", "|θ_c − 90°| over the last quarter (°)", d1, -kInf, kAwayFromAxisDeg,
         std::isfinite(end) ? "θ_c over the last quarter " + deg(end)
-                           : "a_c over the last quarter is below twice the noise floor"));
+                           : "a_c over the last quarter is below twice the noise floor")));
   }
   return finish(std::move(f));
 }
@@ -241,11 +251,11 @@ Finding findRandomBranchVectors(std::span<const AssemblyResult> runs) {
   for (const AssemblyResult* a : chosen) {
     const auto ln = a->shearing.column("a_ln"), lt = a->shearing.column("a_lt");
     const double mln = finiteMedian(ln), mlt = finiteMedian(lt), mn = finiteMedian(a->shearing.column("a_n"));
-    f.checks.push_back(measuredCheck(a->label() + ": small", "max(median a_ln, median a_lt)",
+    f.checks.push_back(within(kNonNegative, measuredCheck(a->label() + ": small", "max(median a_ln, median a_lt)",
                                      std::isfinite(mln) && std::isfinite(mlt) ? std::max(mln, mlt) : std::nan(""),
                                      -kInf, kSmallBranchAnisotropy,
                                      "median a_ln = " + fixed(mln, 3) + ", a_lt = " + fixed(mlt, 3) + " (a_n: " +
-                                         fixed(mn, 3) + ")"));
+                                         fixed(mn, 3) + ")")));
     int greater = 0, counted = 0;
     for (size_t r = 0; r < ln.size(); ++r) {
       if (!std::isfinite(ln[r]) || !std::isfinite(lt[r])) continue;
@@ -253,9 +263,9 @@ Finding findRandomBranchVectors(std::span<const AssemblyResult> runs) {
       greater += lt[r] > ln[r];
     }
     const double share = counted ? static_cast<double>(greater) / counted : std::nan("");
-    f.checks.push_back(measuredCheck(a->label() + ": a_lt > a_ln", "share of samples with a_lt > a_ln", share,
+    f.checks.push_back(within(kShare, measuredCheck(a->label() + ": a_lt > a_ln", "share of samples with a_lt > a_ln", share,
                                      kMostRows, kInf,
-                                     "in " + std::to_string(greater) + " of " + std::to_string(counted) + " samples"));
+                                     "in " + std::to_string(greater) + " of " + std::to_string(counted) + " samples")));
   }
   return finish(std::move(f));
 }
@@ -275,11 +285,11 @@ Finding findBeddingFabric(std::span<const AssemblyResult> runs) {
   for (const AssemblyResult* a : chosen) {
     const double alpha = a->beddingDeg;
     const double start = startDirection(*a, "c"), end = endDirection(*a, "c");
-    f.checks.push_back(measuredCheck(
+    f.checks.push_back(within(kAxialDistance, measuredCheck(
         a->label() + ": θ_c(0) ≈ 90° + α", "|θ_c(0) − (90° + α)| (°)", axialDistanceDeg(start, 90 + alpha), -kInf,
         kNearDirectionDeg,
         std::isfinite(start) ? "θ_c(0) = " + deg(start) + " (90° + α = " + deg(analysis::axialDeg(90 + alpha)) + ")"
-                             : "a_c(0) = " + general(a->shearing.at("a_c", 0), 2) + " is below twice the noise floor"));
+                             : "a_c(0) = " + general(a->shearing.at("a_c", 0), 2) + " is below twice the noise floor")));
 
     // Holds when the end is within 10° of 90° or at least 5° closer than the start: one number,
     // the end's distance less the larger of the two allowances.
@@ -299,11 +309,24 @@ Finding findBeddingFabric(std::span<const AssemblyResult> runs) {
         if (std::isfinite(d)) dist.push_back(axialDistanceDeg(d, alpha));
       }
       const double median = finiteMedian(dist);
-      f.checks.push_back(measuredCheck(
+      f.checks.push_back(within(kAxialDistance, measuredCheck(
           a->label() + ": θ_" + term + " ≈ α", "median |θ_" + term + " − α| (°)", median, -kInf, kNearDirectionDeg,
           std::isfinite(median) ? "median |θ_" + term + " − α| = " + deg(median) + " (mean direction " +
                                       deg(axialMeanDeg(dirs)) + ")"
-                                : "a_" + term + " below twice the noise floor throughout"));
+                                : "a_" + term + " below twice the noise floor throughout")));
+    }
+    // The one magnitude the paper's text gives for the fabric: a_c for α = 60° "keeping a
+    // constant to the end with some fluctuations around a_c = 0.45". Shown beside it, not
+    // judged: "around" gives no tolerance.
+    if (std::lround(alpha) == 60) {
+      const double late = finiteMean(overStrainFraction(*a, a->shearing.column("a_c"), 0.5, 1.0));
+      Check magnitude = measuredCheck(a->label() + ": a_c against the paper's 0.45",
+                                      "mean a_c over the second half of the shearing", late, -kInf, kInf,
+                                      "mean a_c " + fixed(late, 3) + " from ε22 = half the final strain to the end; "
+                                      "the paper: fluctuating around 0.45");
+      magnitude.diagnostic = true;
+      magnitude.range = kNonNegative;
+      f.checks.push_back(magnitude);
     }
     startCoef.push_back(a->shearing.at("a_c", 0));
     floors.push_back(floorAt(*a, 0));
@@ -325,6 +348,7 @@ Finding findBeddingFabric(std::span<const AssemblyResult> runs) {
   } else {
     same.measured = "fewer than two bedding assemblies ran";
   }
+  same.range = kNonNegative;
   f.checks.push_back(same);
   return finish(std::move(f));
 }
@@ -398,11 +422,11 @@ Finding findMicroExpressions(std::span<const AssemblyResult> runs) {
   for (const AssemblyResult* a : chosen) {
     const double e7 = medianEquationError(*a, "omega_micro_deg");
     f.checks.push_back(
-        measuredCheck(a->label() + ": Eq. (7) follows", "median error (°)", e7, -kInf, kEquationDeg, "median error " + deg(e7)));
+        within(kAxialDistance, measuredCheck(a->label() + ": Eq. (7) follows", "median error (°)", e7, -kInf, kEquationDeg, "median error " + deg(e7))));
     if (isIsotropicFabric(*a)) {
       const double e10 = medianEquationError(*a, "omega_eq10_deg");
-      f.checks.push_back(measuredCheck(a->label() + ": Eq. (10) follows", "median error (°)", e10, -kInf, kEquationDeg,
-                                       "median error " + deg(e10)));
+      f.checks.push_back(within(kAxialDistance, measuredCheck(a->label() + ": Eq. (10) follows", "median error (°)", e10, -kInf, kEquationDeg,
+                                       "median error " + deg(e10))));
     }
     if (isBedding(*a)) {
       const double e11 = medianEquationError(*a, "omega_eq11_deg");
@@ -427,8 +451,8 @@ Finding findVoidRatios(std::span<const AssemblyResult> runs) {
     const double e = a.summary.voidRatioAfterConsolidation;
     if (a.summary.status != RunStatus::Completed || !(e >= 0)) continue;
     any = true;
-    f.checks.push_back(measuredCheck(a.label(), "void ratio after consolidation", e, kVoidRatioLow, below(kVoidRatioHigh),
-                                     "e = " + fixed(e, 3) + " (paper " + fixed(paperVoidRatio(a), 3) + ")"));
+    f.checks.push_back(within(kNonNegative, measuredCheck(a.label(), "void ratio after consolidation", e, kVoidRatioLow, below(kVoidRatioHigh),
+                                     "e = " + fixed(e, 3) + " (paper " + fixed(paperVoidRatio(a), 3) + ")")));
   }
   if (!any) return noneRan(std::move(f), "all");
   return finish(std::move(f));
@@ -470,9 +494,9 @@ Finding findOmegaOnsetSign(std::span<const AssemblyResult> runs) {
     const double omega = found ? a->shearing.at("omega_macro_deg", onset) : std::nan("");
     const double late = finiteMean(overStrainFraction(*a, a->shearing.column("omega_macro_deg"), 0.75, 1.0));
     const std::string at = found ? "ε22 = " + fixed(strain[onset] * 100, 2) + " %" : "no sample";
-    f.checks.push_back(measuredCheck(a->label() + ": ω starts positive", "ω at the onset (°)", omega, above(0.0), kInf,
+    f.checks.push_back(within(kSignedAxialAngle, measuredCheck(a->label() + ": ω starts positive", "ω at the onset (°)", omega, above(0.0), kInf,
                                      "ω = " + deg(omega) + " at " + at +
-                                         (found ? " (φ_mob " + deg(phi[onset]) + ")" : "")));
+                                         (found ? " (φ_mob " + deg(phi[onset]) + ")" : ""))));
     f.checks.push_back(measuredCheck(a->label() + ": ω decreases from its onset",
                                      "mean ω over the last quarter − ω at the onset (°)", late - omega, -kInf, below(0.0),
                                      "last quarter " + deg(late) + ", onset " + deg(omega)));
@@ -483,6 +507,7 @@ Finding findOmegaOnsetSign(std::span<const AssemblyResult> runs) {
       Check eq = measuredCheck(a->label() + ": ω by " + name + " at the onset", "ω by " + std::string(name) + " (°)", v,
                                -kInf, kInf, "ω = " + deg(v) + " at " + at);
       eq.diagnostic = true;
+      eq.range = kSignedAxialAngle;
       f.checks.push_back(eq);
     }
     for (const bool atOnset : {false, true}) {
@@ -537,8 +562,9 @@ std::vector<Finding> mergeSeedFindings(const std::vector<std::vector<Finding>>& 
     for (size_t j = 0; j < checks.size(); ++j) {
       Check& c = checks[j];
       if (c.quantity.empty()) continue;  // "no completed run": nothing measured to merge
-      const MeanInterval m = c.axial ? axialMeanInterval(values[j]) : meanInterval(values[j]);
+      const MeanInterval m = c.axial ? axialMeanInterval(values[j]) : meanIntervalInRange(values[j], c.range);
       c.runs = runs;
+      c.interval = m.method;
       c.seeds = m.n;
       c.value = m.mean;
       c.ciLow = m.low;
@@ -556,6 +582,14 @@ std::vector<Finding> mergeSeedFindings(const std::vector<std::vector<Finding>>& 
         c.verdict = inside ? Verdict::Holds : outside ? Verdict::DoesNotHold : Verdict::NotResolved;
         c.measured = c.quantity + " = " + general(m.mean, 3) + ", 95 % interval " + general(m.low, 3) + " to " +
                      general(m.high, 3) + " over " + std::to_string(m.n) + " seeds" + of;
+        if (c.verdict == Verdict::NotResolved && std::isfinite(m.sd)) {
+          // The threshold the interval straddles decides which way more seeds would tip it.
+          const double threshold = m.low < c.holdsFrom && c.holdsFrom <= m.high ? c.holdsFrom : c.holdsTo;
+          c.seedsToResolve = seedsToExclude(m.mean, m.sd, threshold);
+          if (c.seedsToResolve > 0) {
+            c.measured += "; about " + std::to_string(c.seedsToResolve) + " seeds would resolve it at this spread";
+          }
+        }
       }
     }
     f.checks = std::move(checks);

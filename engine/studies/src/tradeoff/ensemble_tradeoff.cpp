@@ -158,6 +158,7 @@ double mean(const std::vector<double>& v) { return report::meanInterval(v).mean;
 EnsembleStudy runEnsembleTradeoff(const TradeoffOptions& opt, std::ostream* progress) {
   SweepPlan plan = opt.quick ? quickPlan() : fullPlan();
   if (!opt.presets.empty()) plan.presets = opt.presets;
+  if (!opt.axes.empty()) keepAxes(plan, opt.axes);
   for (const std::string& p : plan.presets) presetScene(p);  // an unknown preset fails here
   const std::optional<std::string> refusal = box2dRefusal(plan.presets.front());
   const std::vector<Setting> settings = expandPlan(plan, refusal);

@@ -1,5 +1,6 @@
 #include "grainlab/studies/tradeoff/sweep_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -75,6 +76,24 @@ SweepPlan quickPlan() {
   p.reference.sampleStrain = 0.005;
   p.noiseProbe = false;
   return p;
+}
+
+void keepAxes(SweepPlan& plan, const std::vector<std::string>& axes) {
+  static const std::vector<std::string> known{"timestep_safety", "inertial_number", "vertices", "sample_strain",
+                                              "engine", "noise"};
+  for (const std::string& a : axes) {
+    if (std::find(known.begin(), known.end(), a) == known.end()) {
+      throw SceneError("--axes", "unknown axis \"" + a +
+                                     "\" (timestep_safety, inertial_number, vertices, sample_strain, engine, noise)");
+    }
+  }
+  const auto kept = [&](const char* axis) { return std::find(axes.begin(), axes.end(), axis) != axes.end(); };
+  if (!kept("timestep_safety")) plan.timestepSafeties.clear();
+  if (!kept("inertial_number")) plan.inertialNumbers.clear();
+  if (!kept("vertices")) plan.vertexCounts.clear();
+  if (!kept("sample_strain")) plan.sampleStrains.clear();
+  if (!kept("engine")) plan.engineAxis = false;
+  if (!kept("noise")) plan.noiseProbe = false;
 }
 
 std::vector<Setting> expandPlan(const SweepPlan& plan, const std::optional<std::string>& box2dRefusal) {

@@ -81,6 +81,7 @@ std::string joined(const std::vector<std::string>& items) {
 TradeoffStudy runTradeoff(const TradeoffOptions& opt, std::ostream* progress) {
   SweepPlan plan = opt.quick ? quickPlan() : fullPlan();
   if (!opt.presets.empty()) plan.presets = opt.presets;
+  if (!opt.axes.empty()) keepAxes(plan, opt.axes);
   for (const std::string& p : plan.presets) presetScene(p);  // an unknown preset fails here
 
   // The engine axis exists only where the scene parser takes "box2d".

@@ -16,6 +16,9 @@ struct RunRequest {
   const Scene& scene;
   CheckpointPolicy checkpoint;
   bool resume = false;
+  /// Where the run keeps its stages' ends (runScene's stageDirectory), for runs that start from
+  /// them (start_from.run_id).
+  std::string stageDirectory;
 };
 
 /// Runs one scene to the end, reporting to the observer. The server uses grainlab::runScene
@@ -39,7 +42,8 @@ struct ServeOptions {
   int replayFrameEvery = 4;             ///< store a replay frame every N samples (and the last)
   /// Where each run keeps its checkpoint (run-ID.bin); empty = "<db>.checkpoints" beside the
   /// database. A run that stops early (server stopped or killed, wall-time limit) can be
-  /// resumed from it.
+  /// resumed from it. Its stages' ends are kept in run-ID/stages/ there, and the specimen a
+  /// run started from in run-ID/specimen.checkpoint (start_from.run_id).
   std::string checkpointDir;
   /// On start-up, resume the runs that were interrupted and have a checkpoint (else they are
   /// only listed on stderr, for POST /api/runs/{id}/resume or the dashboard).

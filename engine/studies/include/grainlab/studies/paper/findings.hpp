@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "grainlab/studies/paper/assembly_result.hpp"
+#include "grainlab/studies/paper/ensemble_stats.hpp"
 
 namespace grainlab::report {
 
@@ -44,6 +45,11 @@ struct Check {
   /// Measured to explain another check, not a criterion: left out of the finding's verdict.
   bool diagnostic = false;
   bool axial = false;    ///< value is an axial direction (degrees): averaged on 2θ
+  ValueRange range;      ///< the values the quantity can take; its interval stays inside
+  IntervalMethod interval = IntervalMethod::None;  ///< how ciLow, ciHigh were computed
+  /// Not resolved: the seeds that would resolve it if the mean and the seed-to-seed spread
+  /// stayed as measured (seedsToExclude of the threshold inside the interval); −1 otherwise.
+  int seedsToResolve = -1;
 };
 
 struct Finding {
@@ -94,7 +100,8 @@ Finding findOmegaOnsetSign(std::span<const AssemblyResult> runs);        ///< 8
 std::vector<Finding> evaluateSeedFindings(std::span<const AssemblyResult> runs);
 
 /// Merges the findings of each seed (same claims, one list per seed): each check's value
-/// becomes the mean over the seeds that measured it with its 95 % t-interval, and its verdict
+/// becomes the mean over the seeds that measured it with its 95 % interval (ensemble_stats.hpp:
+/// t, cut to the check's range; circular for axial directions), and its verdict
 /// holds when the whole interval lies in the holding range, does not hold when none of it
 /// does, and is not resolved otherwise. With one seed the checks are returned as they were.
 std::vector<Finding> mergeSeedFindings(const std::vector<std::vector<Finding>>& perSeed);

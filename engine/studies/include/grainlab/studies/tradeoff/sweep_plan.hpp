@@ -49,6 +49,11 @@ SweepPlan fullPlan();
 /// A few seconds' worth on circular-quick, for the test: two values per axis.
 SweepPlan quickPlan();
 
+/// Keeps only the named axes of the plan (timestep_safety, inertial_number, vertices,
+/// sample_strain, engine — which includes box2d's own knobs — and noise); the reference always
+/// runs. Throws SceneError("--axes", ...) naming an axis it does not know.
+void keepAxes(SweepPlan& plan, const std::vector<std::string>& axes);
+
 /// Every point of the plan, the reference of each preset first. `box2dRefusal`, if set, is
 /// why the parser refused the box2d engine: the engine axis is then left out.
 std::vector<Setting> expandPlan(const SweepPlan& plan, const std::optional<std::string>& box2dRefusal);

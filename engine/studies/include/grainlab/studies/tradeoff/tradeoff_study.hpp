@@ -21,6 +21,7 @@ struct TradeoffOptions {
   bool quick = false;             ///< quickPlan() instead of fullPlan()
   unsigned jobs = 0;              ///< runs at once; 0 = hardware threads
   std::vector<std::string> presets;  ///< instead of the plan's, if not empty
+  std::vector<std::string> axes;     ///< only these axes (keepAxes), if not empty
   /// The cost the Pareto front is taken on: "cpu" (the run's own CPU seconds: its wall time
   /// on an idle core, whatever else the machine runs) or "wall".
   std::string cost = "cpu";
