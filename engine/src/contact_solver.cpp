@@ -12,7 +12,7 @@
 #include "disc_pair_kernel.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
-#include "simd_path.hpp"
+#include "grainlab/simd_path.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -61,6 +61,7 @@ void ContactSolver::initialize() {
   for (double r : particles_.boundingRadius) meanRadius += r;
   const int n = particles_.size();
   skin_ = n ? skinFraction_ * meanRadius / n : 0.0;
+  writeBackWideState();
   neighbors_.invalidate();
 }
 
@@ -69,7 +70,16 @@ bool ContactSolver::movedOutOfSkin(int begin, int end) const {
 }
 
 void ContactSolver::clearTangentialHistory() {
+  writeBackWideState();
   for (PairState& p : neighbors_.pairs()) p.history = 0;
+  discBatchStale_ = true;
+}
+
+void ContactSolver::writeBackWideState() const {
+  if (!wideStateAhead_) return;
+  // The pairs' state is part of this solver's value: the batch only held it for the wide path.
+  discBatch_.writeBack(const_cast<NeighborList&>(neighbors_).pairs());
+  wideStateAhead_ = false;
 }
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
@@ -272,49 +282,54 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   }
   DiscPairBatch& b = discBatch_;
   std::vector<PairState>& pairs = neighbors_.pairs();
+  Vec2* f = particles_.force.data();
+  double* tau = particles_.torque.data();
+  // One thread adds each share at once; several write records, summed per particle after.
+  const bool serial = pool_ == nullptr;
   const DiscPairKernelInput in{
       particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
-      particles_.boundingRadius.data(), b.i(), b.j(), b.state(), b.dampN(), b.dampT(), b.slots(),
-      reinterpret_cast<double*>(pairs.data()), material_.normalStiffness, material_.tangentialStiffness,
-      material_.friction, dt, std::is_same_v<decltype(law.tangential), CundallStrack>, b.endFx(), b.endFy(),
-      b.endTorque(), b.endStride()};
+      particles_.boundingRadius.data(), b.i(), b.j(), b.dampN(), b.dampT(), b.history(), b.fn(), b.ft(),
+      b.overlap(), material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
+      std::is_same_v<decltype(law.tangential), CundallStrack>, serial ? f->data() : nullptr, serial ? tau : nullptr,
+      b.ends(), b.iEnd(), b.jEnd()};
+  wideStateAhead_ = true;
   const int blocks = b.paddedSlots() / kDiscPairBlock;
   const int wallPairs = static_cast<int>(b.wallPairs().size());
-  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as today).
+  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as the baseline).
   auto work = [&](int begin, int end) {
     if (const int last = std::min(end, blocks); begin < last) discPairForces(in, begin * kDiscPairBlock, last * kDiscPairBlock);
     const Vec2* x = particles_.position.data();
     const double* radius = particles_.boundingRadius.data();
     for (int w = std::max(begin, blocks) - blocks; w < end - blocks; ++w) {
       PairState& p = pairs[static_cast<size_t>(b.wallPairs()[static_cast<size_t>(w)])];
-      const int slot = b.wallSlot(w);
       const DiscContact c = touchDiscWall(x[p.i], radius[p.i], particles_.walls[static_cast<size_t>(-1 - p.j)]);
       if (c.overlap <= 0) {
         clearContact(p);
-        b.endFx()[slot] = b.endFy()[slot] = b.endTorque()[slot] = -0.0;
+        if (!serial) b.setWallEnd(w, -0.0, -0.0, -0.0);
         continue;
       }
       Vec2 F;
       double ti, tj;
       contactForce(p, c, law, dt, F, ti, tj);
-      b.endFx()[slot] = -F.x();
-      b.endFy()[slot] = -F.y();
-      b.endTorque()[slot] = -ti;
+      if (serial) {
+        f[p.i] -= F;
+        tau[p.i] -= ti;
+      } else {
+        b.setWallEnd(w, -F.x(), -F.y(), -ti);
+      }
     }
   };
   if (pool_) pool_->parallelFor(blocks + wallPairs, work);
   else work(0, blocks + wallPairs);
-  // Each particle's ends in pair order, then its local damping.
-  Vec2* f = particles_.force.data();
-  double* tau = particles_.torque.data();
+  // Each particle's records in order, then its local damping.
   auto finish = [&](int begin, int end) {
     for (int k = begin; k < end; ++k) {
-      b.addEnds(k, f[k], tau[k]);
+      if (!serial) b.addEnds(k, f[k], tau[k]);
       if (material_.localDamping > 0) applyLocalDamping(k);
     }
   };
   if (pool_) pool_->parallelFor(particles_.size(), finish);
-  else finish(0, particles_.size());
+  else if (material_.localDamping > 0) finish(0, particles_.size());
 }
 
 // Which pair ends the parallel force loop adds at once and which wait, for the current pair
@@ -377,6 +392,11 @@ void ContactSolver::carryPolygonCache() {
 
 void ContactSolver::computeForces(double dt, bool moved) {
   auto t0 = Clock::now();
+  const bool wide = particles_.polygons.empty() && simdPath() == SimdPath::Wide;
+  // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it
+  // over; after a baseline step the batch reloads it.
+  if (!wide || moved) writeBackWideState();
+  if (!wide) discBatchStale_ = true;
   const bool rebuilt = neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
                                          particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
@@ -388,7 +408,6 @@ void ContactSolver::computeForces(double dt, bool moved) {
     discBatchStale_ = true;
   }
   auto t1 = Clock::now();
-  const bool wide = !polygons && simdPath() == SimdPath::Wide;
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
   // polygon code, a frictionless one keeps no tangential history.
   const LinearSpringDashpot normal{material_.normalStiffness};
@@ -423,6 +442,7 @@ void ContactSolver::applyLocalDamping(int k) {
 }
 
 void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
+  writeBackWideState();
   const std::vector<PairState>& pairs = neighbors_.pairs();
   for (size_t k = 0; k < pairs.size(); ++k) {
     const PairState& p = pairs[k];
@@ -443,6 +463,7 @@ void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
 }
 
 void ContactSolver::countContacts(std::vector<int>& count) const {
+  writeBackWideState();
   count.assign(static_cast<size_t>(particles_.size()), 0);
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
@@ -452,6 +473,7 @@ void ContactSolver::countContacts(std::vector<int>& count) const {
 }
 
 double ContactSolver::elasticEnergy() const {
+  writeBackWideState();
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
@@ -463,6 +485,7 @@ double ContactSolver::elasticEnergy() const {
 }
 
 void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalDt) const {
+  writeBackWideState();
   const std::vector<double>& radius = particles_.boundingRadius;
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
@@ -486,6 +509,7 @@ void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalD
 
 void ContactSolver::persist(StateArchive& a) {
   a.section("contacts");
+  writeBackWideState();
   neighbors_.persist(a, particles_.size(), static_cast<int>(particles_.walls.size()));
   a.bitwise(polygonCache_);
   if (a.loading()) {

@@ -56,6 +56,7 @@ class ContactSolver {
   void assignDeferredSlots();
   void carryPolygonCache();
   void applyLocalDamping(int k);
+  void writeBackWideState() const;
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law, double dt);
   // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
@@ -96,9 +97,11 @@ class ContactSolver {
   // by whether the scene has polygons).
   std::vector<TouchingDiscs> touchingDiscs_;
   std::vector<TouchingShapes> touchingShapes_;
-  // The wide path's layout of the pairs, rebuilt when the list is.
+  // The wide path's layout of the pairs, rebuilt when the list is. After a wide step the
+  // disc pairs' state is the batch's until writeBackWideState() hands it to the list.
   DiscPairBatch discBatch_;
   bool discBatchStale_ = true;
+  mutable bool wideStateAhead_ = false;
 };
 
 }  // namespace grainlab

@@ -1,61 +1,85 @@
 #include "disc_pair_batch.hpp"
 
-#include <cstddef>
-
 #include "disc_pair_kernel.hpp"
 
 namespace grainlab {
-
-// The kernel reads and writes a pair's state through a view of the list as doubles.
-static_assert(sizeof(PairState) == 7 * sizeof(double));
-static_assert(offsetof(PairState, dampN) == 1 * sizeof(double) && offsetof(PairState, history) == 3 * sizeof(double) &&
-              offsetof(PairState, fn) == 4 * sizeof(double) && offsetof(PairState, ft) == 5 * sizeof(double) &&
-              offsetof(PairState, overlap) == 6 * sizeof(double));
 
 void DiscPairBatch::build(const NeighborList& list, int particles) {
   const std::vector<PairState>& pairs = list.pairs();
   i_.clear();
   j_.clear();
-  state_.clear();
+  pair_.clear();
   dampN_.clear();
   dampT_.clear();
+  history_.clear();
   wallPairs_.clear();
-  std::vector<int> slotOfPair(pairs.size(), -1);
+  iEnd_.clear();
+  jEnd_.clear();
+  wallEnd_.clear();
+  // Each pair end's record: particle k's disc-disc ends in pair order (as the list's adjacency
+  // names them), then its walls; the first kEndsHeld at k × kEndsHeld on, the rest in the
+  // overflow after all of those.
+  const std::vector<int>& adjacency = list.adjacency();
+  const std::vector<int>& adjacencyStart = list.adjacencyStart();
+  const size_t n = static_cast<size_t>(particles);
+  std::vector<std::int32_t> place(2 * pairs.size(), 0);
+  overflowStart_.assign(n + 1, 0);
+  auto next = static_cast<std::int32_t>(n * kEndsHeld);
+  for (size_t k = 0; k < n; ++k) {
+    overflowStart_[k] = next;
+    int m = 0;
+    for (const bool walls : {false, true}) {
+      for (int e = adjacencyStart[k]; e < adjacencyStart[k + 1]; ++e) {
+        const int pairEnd = adjacency[static_cast<size_t>(e)];  // pair × 2, + 1 for its j end
+        if ((pairs[static_cast<size_t>(pairEnd >> 1)].j < 0) != walls) continue;
+        place[static_cast<size_t>(pairEnd)] = m < kEndsHeld ? static_cast<std::int32_t>(k * kEndsHeld + m) : next++;
+        ++m;
+      }
+    }
+  }
+  overflowStart_[n] = next;
   for (size_t k = 0; k < pairs.size(); ++k) {
     const PairState& p = pairs[k];
     if (p.j < 0) {
       wallPairs_.push_back(static_cast<int>(k));
+      wallEnd_.push_back(place[2 * k]);
       continue;
     }
-    slotOfPair[k] = static_cast<int>(i_.size());
     i_.push_back(p.i);
     j_.push_back(p.j);
-    state_.push_back(static_cast<std::int64_t>(k) * 7);
+    iEnd_.push_back(place[2 * k]);
+    jEnd_.push_back(place[2 * k + 1]);
+    pair_.push_back(static_cast<int>(k));
     dampN_.push_back(p.dampN);
     dampT_.push_back(p.dampT);
+    history_.push_back(p.history);
   }
   slots_ = static_cast<int>(i_.size());
-  // Padding to whole blocks: i = j = 0 is a pair at zero distance, which never touches.
+  // Padding to whole blocks: i = j = 0 is a pair at zero distance, which never touches; its
+  // ends go to a place no particle reads.
   const size_t padded = (i_.size() + kDiscPairBlock - 1) / kDiscPairBlock * kDiscPairBlock;
+  const std::int32_t spare = next;
   padded_ = static_cast<int>(padded);
   i_.resize(padded, 0);
   j_.resize(padded, 0);
-  state_.resize(padded, 0);
+  iEnd_.resize(padded, spare);
+  jEnd_.resize(padded, spare);
   dampN_.resize(padded, 0);
   dampT_.resize(padded, 0);
-  for (size_t w = 0; w < wallPairs_.size(); ++w) slotOfPair[static_cast<size_t>(wallPairs_[w])] = wallSlot(static_cast<int>(w));
-  endStride_ = static_cast<int>(padded + wallPairs_.size());
-  endFx_.assign(2 * static_cast<size_t>(endStride_), -0.0);
-  endFy_.assign(2 * static_cast<size_t>(endStride_), -0.0);
-  endTorque_.assign(2 * static_cast<size_t>(endStride_), -0.0);
-  // Each particle's ends in pair order, as the list's adjacency names them.
-  const std::vector<int>& start = list.adjacencyStart();
-  const std::vector<int>& adjacency = list.adjacency();
-  endStart_.assign(start.begin(), start.begin() + particles + 1);
-  ends_.resize(adjacency.size());
-  for (size_t e = 0; e < adjacency.size(); ++e) {
-    const int pairEnd = adjacency[e];  // pair × 2, + 1 for its j end
-    ends_[e] = slotOfPair[static_cast<size_t>(pairEnd >> 1)] + (pairEnd & 1) * endStride_;
+  history_.resize(padded, 0);
+  fn_.assign(padded, 0);
+  ft_.assign(padded, 0);
+  overlap_.assign(padded, 0);
+  ends_.assign(4 * (static_cast<size_t>(next) + 1), -0.0);
+}
+
+void DiscPairBatch::writeBack(std::vector<PairState>& pairs) const {
+  for (int s = 0; s < slots_; ++s) {
+    PairState& p = pairs[static_cast<size_t>(pair_[static_cast<size_t>(s)])];
+    p.history = history_[static_cast<size_t>(s)];
+    p.fn = fn_[static_cast<size_t>(s)];
+    p.ft = ft_[static_cast<size_t>(s)];
+    p.overlap = overlap_[static_cast<size_t>(s)];
   }
 }
 

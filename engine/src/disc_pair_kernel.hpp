@@ -1,9 +1,12 @@
 #pragma once
 // The disc-disc contact law evaluated several pairs per instruction: the geometry of
-// touchDiscs(), the linear spring-dashpot and Cundall-Strack of contact_law.hpp, in the
-// same operations in the same order, lane by lane. With no fused multiply-add (the build
-// forbids contraction and the kernel calls none), every lane rounds as the scalar code does,
-// so the wide path gives the baseline's bits on any instruction set.
+// touchDiscs() and the linear spring-dashpot and Cundall-Strack of contact_law.hpp, lane by
+// lane. It is not the scalar code's arithmetic: 1/|d| comes from a single-precision estimate
+// refined by Newton's method (no divider: the scalar code's square root and two divisions
+// bounded the kernel), the sliding reset multiplies by 1/k_t, and products are fused. Each
+// differs from the baseline's by rounding only; lanes do not interact, so the result does not
+// depend on how the slots are split between threads, and the same instruction set gives the
+// same bits on every run.
 #include <cstdint>
 #include <string>
 
@@ -24,24 +27,29 @@ struct DiscPairKernelInput {
   // Slots.
   const std::int64_t* i;
   const std::int64_t* j;
-  const std::int64_t* state;  // the pair's PairState, in doubles from pairState
   const double* dampN;
   const double* dampT;
-  int slots;                  // real slots (the rest of the last block is padding)
-  double* pairState;          // the neighbour list's pairs viewed as doubles
+  // The pairs' state per slot: the tangential spring (read and written), and the last
+  // step's fn, ft and overlap (written; all zero where the pair is apart).
+  double* history;
+  double* fn;
+  double* ft;
+  double* overlap;
   // Law.
   double normalStiffness, tangentialStiffness, friction, dt;
   bool frictional;
-  // Results, per pair end: the force and torque to add to i at [s], to j at [endStride + s];
-  // −0 where the pair is apart (adding −0 changes nothing, not even a zero's sign).
-  double* endFx;
-  double* endFy;
-  double* endTorque;
-  int endStride;
+  // With one thread: the particles' force (x0 y0 x1 y1 …) and torque, to which each touching
+  // pair adds its shares at once, in pair order; null with several threads, which write the
+  // shares instead: as fx fy torque 0, i's at ends[4 iEnd[s]], j's at ends[4 jEnd[s]]; −0
+  // where the pair is apart (adding −0 changes nothing, not even a zero's sign).
+  double* force;
+  double* torque;
+  double* ends;
+  const std::int32_t* iEnd;
+  const std::int32_t* jEnd;
 };
 
-/// Evaluates slots [begin, end) (block multiples): writes each pair's history, fn, ft and
-/// overlap into its PairState as the scalar loop does, and its end forces.
+/// Evaluates slots [begin, end) (block multiples): the pairs' state and their end forces.
 void discPairForces(const DiscPairKernelInput& in, int begin, int end);
 /// The instruction set discPairForces runs on this CPU (Highway's name, e.g. "AVX3").
 std::string discPairKernelTarget();

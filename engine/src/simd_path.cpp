@@ -1,4 +1,4 @@
-#include "simd_path.hpp"
+#include "grainlab/simd_path.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
@@ -36,6 +36,14 @@ SimdPath simdPath() {
 }
 
 void overrideSimdPath(std::optional<SimdPath> path) { overridden = path; }
+
+bool hasWidePath() {
+#ifdef GRAINLAB_HAS_WIDE_SIMD
+  return true;
+#else
+  return false;
+#endif
+}
 
 std::string simdTargetName() {
 #ifdef GRAINLAB_HAS_WIDE_SIMD

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/simd_path.hpp"
 
 namespace grainlab::bench {
 
@@ -28,30 +30,61 @@ std::vector<Scene> benchPiles() {
   return {pileScene(50, 50, false), general, pileScene(50, 50, true)};
 }
 
-PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
-                           std::ostream* progress) {
+namespace {
+
+// The scene's world, settled (not timed): the pile is dense, with a realistic number of contacts.
+std::unique_ptr<World> settledWorld(const Scene& scene, int threads, WorldSettings::Engine engine) {
   WorldSettings settings;
   settings.threads = threads;
   settings.engine = engine;
-  World world(scene.material, settings);
-  for (const ParticleSpec& p : scene.particles) world.addParticle(p);
-  for (const Wall& w : scene.walls) world.addWall(w);
-  world.setGravity(scene.gravity);
-  // Settle first (not timed): the pile is dense, with a realistic number of contacts.
-  const int settleSteps = static_cast<int>(scene.stages.front().duration / world.timestep());
-  for (int k = 0; k < settleSteps; ++k) world.step();
-  world.checkHealth();
+  auto world = std::make_unique<World>(scene.material, settings);
+  for (const ParticleSpec& p : scene.particles) world->addParticle(p);
+  for (const Wall& w : scene.walls) world->addWall(w);
+  world->setGravity(scene.gravity);
+  const int settleSteps = static_cast<int>(scene.stages.front().duration / world->timestep());
+  for (int k = 0; k < settleSteps; ++k) world->step();
+  world->checkHealth();
+  return world;
+}
+
+PileSpeed describe(const Scene& scene, const World& world) {
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
-  PileSpeed r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep()};
+  return PileSpeed{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep()};
+}
+
+// Particle-steps per second over `steps` steps.
+double timeSteps(World& world, int steps) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < steps; ++k) world.step();
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return world.size() * static_cast<double>(steps) / s;
+}
+
+}  // namespace
+
+PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
+                           std::ostream* progress) {
+  const std::unique_ptr<World> world = settledWorld(scene, threads, engine);
+  PileSpeed r = describe(scene, *world);
   if (progress) *progress << "bench: " << scene.name << " settled, timing\n";
+  for (int rep = 0; rep < repeats; ++rep) r.rates.push_back(timeSteps(*world, steps));
+  world->checkHealth();
+  return r;
+}
+
+PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress) {
+  const std::unique_ptr<World> world = settledWorld(scene, threads, WorldSettings::Engine::Dem);
+  PathSpeeds r{describe(scene, *world), describe(scene, *world)};
+  if (progress) *progress << "bench: " << scene.name << " settled, timing the wide and the baseline path in turn\n";
   for (int rep = 0; rep < repeats; ++rep) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int k = 0; k < steps; ++k) world.step();
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.rates.push_back(world.size() * static_cast<double>(steps) / s);
+    for (SimdPath path : {SimdPath::Wide, SimdPath::Baseline}) {
+      overrideSimdPath(path);
+      (path == SimdPath::Wide ? r.wide : r.baseline).rates.push_back(timeSteps(*world, steps));
+    }
   }
-  world.checkHealth();
+  overrideSimdPath(std::nullopt);
+  world->checkHealth();
   return r;
 }
 

@@ -31,4 +31,12 @@ std::vector<Scene> benchPiles();
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads,
                            WorldSettings::Engine engine, std::ostream* progress);
 
+/// The same pile timed on the wide and the baseline contact path in turn (wide, baseline,
+/// wide, …: both see the same pile and the same load on the machine), `repeats` × `steps`
+/// steps each. In a build without the wide path both are the baseline.
+struct PathSpeeds {
+  PileSpeed wide, baseline;
+};
+PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress);
+
 }  // namespace grainlab::bench

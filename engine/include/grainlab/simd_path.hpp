@@ -18,6 +18,8 @@ SimdPath simdPath();
 /// Tests only: simdPath() returns `path` from now on (std::nullopt: GRAINLAB_SIMD's again).
 /// A build without the wide path stays on the baseline.
 void overrideSimdPath(std::optional<SimdPath> path);
+/// True if this build has the wide path (built with the CMake option GRAINLAB_SIMD on).
+bool hasWidePath();
 /// The instruction set the wide path runs on this CPU (e.g. "AVX2"), or "baseline".
 std::string simdTargetName();
 
