@@ -1,9 +1,11 @@
 #pragma once
 // Which instruction path the contact step takes. The baseline is the scalar code every
-// x86-64 runs; the wide path evaluates batches of contacts several per instruction, on the
-// widest instruction set this CPU has (chosen at run time, so one binary runs anywhere).
-// GRAINLAB_SIMD=wide opts in; unset or "baseline" (or a build with GRAINLAB_SIMD=OFF) is the
-// baseline, which is faster today. Both give the same bits.
+// x86-64 runs; the wide path evaluates a discs-only scene's contacts several per instruction,
+// on the widest instruction set this CPU has (chosen at run time, so one binary runs
+// anywhere). The wide path is the default where it is built (it is faster on the disc pile:
+// docs/benchmarks.md); GRAINLAB_SIMD=baseline, or a build with the CMake option
+// GRAINLAB_SIMD=OFF, forces the baseline. The two differ at rounding level; each gives the
+// same bits on every run and with any number of threads.
 #include <optional>
 #include <string>
 
@@ -12,8 +14,8 @@ namespace grainlab {
 enum class SimdPath { Baseline, Wide };
 
 /// The path this process takes: read once from GRAINLAB_SIMD ("baseline" or "wide"; unset
-/// means baseline; "wide" in a build without it means baseline). Throws std::invalid_argument naming the variable for
-/// any other value.
+/// means wide; a build without the wide path is always the baseline). Throws
+/// std::invalid_argument naming the variable for any other value.
 SimdPath simdPath();
 /// Tests only: simdPath() returns `path` from now on (std::nullopt: GRAINLAB_SIMD's again).
 /// A build without the wide path stays on the baseline.
