@@ -70,7 +70,9 @@ int benchCommand(const std::vector<std::string>& args) {
       std::cout << "paths " << std::setw(14) << scenes[k].name << "wide (" << target << ") "
                 << std::setprecision(4) << p.wide.medianRate() / 1e6 << " M, baseline "
                 << p.baseline.medianRate() / 1e6 << " M particle-steps/s: wide/baseline "
-                << p.wide.medianRate() / p.baseline.medianRate() << "\n";
+                << p.wide.medianRate() / p.baseline.medianRate() << "; per CPU-second "
+                << bench::median(p.wideCpuRates) / 1e6 << " M, " << bench::median(p.baselineCpuRates) / 1e6
+                << " M: wide/baseline " << bench::median(p.wideCpuRates) / bench::median(p.baselineCpuRates) << "\n";
     }
   }
   return 0;

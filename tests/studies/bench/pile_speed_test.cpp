@@ -26,6 +26,8 @@ TEST(PileSpeed, TimesBothContactPathsInTurnAndLeavesThePathAsItWas) {
   ASSERT_EQ(s.baseline.rates.size(), 3u);
   for (double r : s.wide.rates) EXPECT_GT(r, 0);
   for (double r : s.baseline.rates) EXPECT_GT(r, 0);
+  EXPECT_EQ(s.wideCpuRates.size(), 3u);
+  EXPECT_EQ(s.baselineCpuRates.size(), 3u);
   EXPECT_EQ(s.wide.particles, 36);
   EXPECT_EQ(s.wide.coordination, s.baseline.coordination);  // one settled pile for both
 }

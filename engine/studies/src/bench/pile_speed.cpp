@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <memory>
 
 #include "grainlab/bench_scenes.hpp"
@@ -9,8 +10,9 @@
 
 namespace grainlab::bench {
 
-double PileSpeed::medianRate() const {
-  std::vector<double> v = rates;
+double PileSpeed::medianRate() const { return median(rates); }
+
+double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -80,7 +82,10 @@ PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int thr
   for (int rep = 0; rep < repeats; ++rep) {
     for (SimdPath path : {SimdPath::Wide, SimdPath::Baseline}) {
       overrideSimdPath(path);
+      const std::clock_t c0 = std::clock();
       (path == SimdPath::Wide ? r.wide : r.baseline).rates.push_back(timeSteps(*world, steps));
+      const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+      (path == SimdPath::Wide ? r.wideCpuRates : r.baselineCpuRates).push_back(world->size() * static_cast<double>(steps) / cpu);
     }
   }
   overrideSimdPath(std::nullopt);

@@ -12,6 +12,9 @@
 
 namespace grainlab::bench {
 
+/// The median of `values` (the mean of the middle two for an even count).
+double median(std::vector<double> values);
+
 struct PileSpeed {
   std::string name;
   int particles = 0;
@@ -33,9 +36,12 @@ PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threa
 
 /// The same pile timed on the wide and the baseline contact path in turn (wide, baseline,
 /// wide, …: both see the same pile and the same load on the machine), `repeats` × `steps`
-/// steps each. In a build without the wide path both are the baseline.
+/// steps each. In a build without the wide path both are the baseline. Each repeat is timed
+/// by the wall clock (`rates`) and by the process's CPU time (`cpuRates`: particle-steps per
+/// CPU-second, blind to the time other programs on a busy machine take the core away).
 struct PathSpeeds {
   PileSpeed wide, baseline;
+  std::vector<double> wideCpuRates, baselineCpuRates;
 };
 PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress);
 
