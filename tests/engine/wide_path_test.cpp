@@ -101,6 +101,65 @@ TEST_F(WidePath, GivesTheSameBitsWithAnyThreadCount) {
   }
 }
 
+// A disc five times the size of the twelve discs pressed onto it all round touches more of
+// them than a particle's fixed run of share records holds: the rest go to the overflow, which
+// must keep the order. Threaded runs use the records; one thread adds the shares at once.
+TEST_F(WidePath, ABigDiscsManyContactsGiveTheSameBitsWithAnyThreadCount) {
+  Scene scene = pressedPile();
+  const double r = scene.particles[0].radius, big = 5 * r;
+  const Vec2 centre(0.03, 0.03);
+  std::vector<ParticleSpec> ring;
+  for (int k = 0; k < 12; ++k) {
+    ParticleSpec p = scene.particles[0];
+    p.radius = r;
+    const double a = 2 * kPi * k / 12 + 0.1;
+    p.position = centre + (big + 0.9 * r) * Vec2(std::cos(a), std::sin(a));  // pressed by 0.1 r
+    ring.push_back(p);
+  }
+  ParticleSpec bigDisc = scene.particles[0];
+  bigDisc.position = centre;
+  bigDisc.radius = big;
+  ring.push_back(bigDisc);
+  scene.particles = ring;
+  scene.gravity = Vec2::Zero();
+  auto run = [&](int threads, int* bigContacts) {
+    overrideSimdPath(SimdPath::Wide);
+    WorldSettings settings;
+    settings.threads = threads;
+    World world(scene.material, settings);
+    for (const ParticleSpec& p : scene.particles) world.addParticle(p);
+    for (const Wall& wall : scene.walls) world.addWall(wall);
+    world.setGravity(scene.gravity);
+    const int b = world.size() - 1;
+    *bigContacts = 0;  // the most at once
+    std::vector<ContactRecord> contacts;
+    for (int k = 0; k < 200; ++k) {
+      world.step();
+      contacts.clear();
+      world.contacts(contacts);
+      *bigContacts = std::max(*bigContacts, static_cast<int>(std::count_if(contacts.begin(), contacts.end(),
+                                                                           [&](const ContactRecord& c) {
+                                                                             return c.i == b || c.j == b;
+                                                                           })));
+    }
+    overrideSimdPath(std::nullopt);
+    std::uint64_t hash = 1469598103934665603ull;
+    for (const Vec2& x : world.positions()) {
+      for (int c = 0; c < 2; ++c) {
+        std::uint64_t bits;
+        std::memcpy(&bits, x.data() + c, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+      }
+    }
+    return hash;
+  };
+  int bigContacts = 0, unused = 0;
+  const std::uint64_t serial = run(1, &bigContacts);
+  EXPECT_GT(bigContacts, 8) << "the big disc must touch more neighbours than a run of records holds";
+  EXPECT_EQ(serial, run(2, &unused)) << "2 threads";
+  EXPECT_EQ(serial, run(3, &unused)) << "3 threads";
+}
+
 // Two worlds step the pressed pile in lockstep on the baseline (the same bits), then take one
 // step each, one on the wide path. Their forces may differ by rounding only: the overlap is
 // r_i + r_j − |d|, so a few units in the last place of |d| (ε · 2r) move a normal force by
