@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "grainlab/simd_path.hpp"
 #include "grainlab/studies/bench/pile_speed.hpp"
 
 namespace grainlab {
@@ -62,6 +63,26 @@ int benchCommand(const std::vector<std::string>& args) {
                 << " M particle-steps/s: " << perStep << "x the dem per step, "
                 << perStep * b.timestep / results[k].timestep << "x per simulated second (timestep "
                 << b.timestep / results[k].timestep << "x)\n";
+    }
+  }
+  // Each contact path on the same settled piles in one process, repeats in alternation: the
+  // ratio is what the wide path is worth, whatever else the machine is doing.
+  if (hasWidePath()) {
+    for (size_t k : {size_t{0}, size_t{2}}) {
+      if (!only.empty() && scenes[k].name != only) continue;
+      const bench::PathSpeeds p = bench::measurePathSpeeds(scenes[k], steps, repeats, threads, &std::cerr);
+      overrideSimdPath(SimdPath::Wide);
+      const std::string target = simdTargetName();
+      overrideSimdPath(std::nullopt);
+      std::cout << "paths " << std::setw(14) << scenes[k].name << "wide (" << target << ") "
+                << std::setprecision(4) << p.wide.medianRate() / 1e6 << " M, baseline "
+                << p.baseline.medianRate() / 1e6 << " M particle-steps/s: wide/baseline "
+                << p.wide.medianRate() / p.baseline.medianRate();
+      if (threads == 1) {  // by the stepping thread's CPU time, which other programs move far less
+        std::cout << "; per CPU-second " << p.wide.medianCpuRate() / 1e6 << " M, " << p.baseline.medianCpuRate() / 1e6
+                  << " M: wide/baseline " << p.wide.medianCpuRate() / p.baseline.medianCpuRate();
+      }
+      std::cout << "\n";
     }
   }
   return 0;

@@ -9,8 +9,10 @@
 #include <type_traits>
 
 #include "contact_law.hpp"
+#include "disc_pair_kernel.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "grainlab/simd_path.hpp"
 #include "rolling_resistance.hpp"
 #include "worker_pool.hpp"
 
@@ -66,6 +68,7 @@ void ContactSolver::initialize() {
   for (double r : particles_.boundingRadius) meanRadius += r;
   const int n = particles_.size();
   skin_ = n ? skinFraction_ * meanRadius / n : 0.0;
+  writeBackWideState();
   neighbors_.invalidate();
 }
 
@@ -74,7 +77,16 @@ bool ContactSolver::movedOutOfSkin(int begin, int end) const {
 }
 
 void ContactSolver::clearTangentialHistory() {
+  writeBackWideState();
   for (PairState& p : neighbors_.pairs()) p.history.tangential = 0;
+  discBatchStale_ = true;
+}
+
+void ContactSolver::writeBackWideState() const {
+  if (!wideStateAhead_) return;
+  // The pairs' state is part of this solver's value: the batch only held it for the wide path.
+  discBatch_.writeBack(const_cast<NeighborList&>(neighbors_).pairs());
+  wideStateAhead_ = false;
 }
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
@@ -278,6 +290,64 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   else finish(0, particles_.size());
 }
 
+template <class Law>
+void ContactSolver::widePairForces(const Law& law, double dt) {
+  if (discBatchStale_) {
+    discBatch_.build(neighbors_, particles_.size());
+    discBatchStale_ = false;
+  }
+  DiscPairBatch& b = discBatch_;
+  std::vector<PairState>& pairs = neighbors_.pairs();
+  Vec2* f = particles_.force.data();
+  double* tau = particles_.torque.data();
+  // One thread adds each share at once; several write records, summed per particle after.
+  const bool serial = pool_ == nullptr;
+  const DiscPairKernelInput in{
+      particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
+      particles_.boundingRadius.data(), b.i(), b.j(), b.dampN(), b.dampT(), b.history(), b.fn(), b.ft(),
+      b.overlap(), material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
+      std::is_same_v<decltype(law.tangential), CundallStrack>, serial ? f->data() : nullptr, serial ? tau : nullptr,
+      b.ends(), b.iEnd(), b.jEnd()};
+  wideStateAhead_ = true;
+  const int blocks = b.paddedSlots() / kDiscPairBlock;
+  const int wallPairs = static_cast<int>(b.wallPairs().size());
+  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as the baseline).
+  auto work = [&](int begin, int end) {
+    if (const int last = std::min(end, blocks); begin < last) discPairForces(in, begin * kDiscPairBlock, last * kDiscPairBlock);
+    const Vec2* x = particles_.position.data();
+    const double* radius = particles_.boundingRadius.data();
+    for (int w = std::max(begin, blocks) - blocks; w < end - blocks; ++w) {
+      PairState& p = pairs[static_cast<size_t>(b.wallPairs()[static_cast<size_t>(w)])];
+      const DiscContact c = touchDiscWall(x[p.i], radius[p.i], particles_.walls[static_cast<size_t>(-1 - p.j)]);
+      if (c.overlap <= 0) {
+        clearContact(p);
+        if (!serial) b.setWallEnd(w, -0.0, -0.0, -0.0);
+        continue;
+      }
+      Vec2 F;
+      double ti, tj;
+      contactForce(p, c, law, dt, F, ti, tj);
+      if (serial) {
+        f[p.i] -= F;
+        tau[p.i] -= ti;
+      } else {
+        b.setWallEnd(w, -F.x(), -F.y(), -ti);
+      }
+    }
+  };
+  if (pool_) pool_->parallelFor(blocks + wallPairs, work);
+  else work(0, blocks + wallPairs);
+  // Each particle's records in order, then its local damping.
+  auto finish = [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      if (!serial) b.addEnds(k, f[k], tau[k]);
+      if (material_.localDamping > 0) applyLocalDamping(k);
+    }
+  };
+  if (pool_) pool_->parallelFor(particles_.size(), finish);
+  else if (material_.localDamping > 0) finish(0, particles_.size());
+}
+
 // Which pair ends the parallel force loop adds at once and which wait, for the current pair
 // list and number of threads. Particle k belongs to the slice holding its first pair; a share
 // computed in any other slice (a later one: pairs are in order) gets a slot.
@@ -361,6 +431,14 @@ void ContactSolver::carryPolygonCache() {
 
 void ContactSolver::computeForces(double dt, bool moved) {
   auto t0 = Clock::now();
+  // The wide kernel knows the linear spring-dashpot with Coulomb friction or none; a scene with
+  // rolling resistance keeps the baseline throughout, so its rolling history is never left
+  // behind by a stage the kernel ran.
+  const bool wide = particles_.polygons.empty() && material_.rollingFriction == 0 && simdPath() == SimdPath::Wide;
+  // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it
+  // over; after a baseline step the batch reloads it.
+  if (!wide || moved) writeBackWideState();
+  if (!wide) discBatchStale_ = true;
   const bool rebuilt = neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
                                          particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
@@ -370,6 +448,7 @@ void ContactSolver::computeForces(double dt, bool moved) {
     if (polygons) carryPolygonCache();
     ++profile_.rebuilds;
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    discBatchStale_ = true;
   }
   auto t1 = Clock::now();
   // One instantiation of the pair loop per law and geometry: a discs-only scene runs no
@@ -381,11 +460,13 @@ void ContactSolver::computeForces(double dt, bool moved) {
     pairForces<RollingLaw, true>(law, dt);
   } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
-    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+    if (wide) widePairForces(law, dt);
+    else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   } else {
     const ContactLaw<LinearSpringDashpot, CundallStrack> law{
         normal, {material_.tangentialStiffness, material_.friction}};
-    polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
+    if (wide) widePairForces(law, dt);
+    else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   }
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
@@ -408,6 +489,7 @@ void ContactSolver::applyLocalDamping(int k) {
 }
 
 void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
+  writeBackWideState();
   const std::vector<PairState>& pairs = neighbors_.pairs();
   for (size_t k = 0; k < pairs.size(); ++k) {
     const PairState& p = pairs[k];
@@ -428,6 +510,7 @@ void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
 }
 
 void ContactSolver::countContacts(std::vector<int>& count) const {
+  writeBackWideState();
   count.assign(static_cast<size_t>(particles_.size()), 0);
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
@@ -437,6 +520,7 @@ void ContactSolver::countContacts(std::vector<int>& count) const {
 }
 
 double ContactSolver::elasticEnergy() const {
+  writeBackWideState();
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
@@ -451,6 +535,7 @@ double ContactSolver::elasticEnergy() const {
 }
 
 void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalDt) const {
+  writeBackWideState();
   const std::vector<double>& radius = particles_.boundingRadius;
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
@@ -474,6 +559,7 @@ void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalD
 
 void ContactSolver::persist(StateArchive& a) {
   a.section("contacts");
+  writeBackWideState();
   neighbors_.persist(a, particles_.size(), static_cast<int>(particles_.walls.size()));
   a.bitwise(polygonCache_);
   if (a.loading()) {
@@ -489,6 +575,7 @@ void ContactSolver::persist(StateArchive& a) {
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     if (pool_) assignDeferredSlots();  // the slots follow the pair list
     if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
+    discBatchStale_ = true;
   }
 }
 

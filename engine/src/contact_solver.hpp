@@ -12,6 +12,7 @@
 #include "contact_geometry.hpp"
 #include "contact_law.hpp"
 #include "rolling_resistance.hpp"
+#include "disc_pair_batch.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
@@ -58,8 +59,13 @@ class ContactSolver {
   void assignRollingPairs();
   void carryPolygonCache();
   void applyLocalDamping(int k);
+  void writeBackWideState() const;
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law, double dt);
+  // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
+  // each particle sums its pair ends in pair order.
+  template <class Law>
+  void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, class Force, class Apart>
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
   template <class Law>
@@ -95,6 +101,11 @@ class ContactSolver {
   // by whether the scene has polygons).
   std::vector<TouchingDiscs> touchingDiscs_;
   std::vector<TouchingShapes> touchingShapes_;
+  // The wide path's layout of the pairs, rebuilt when the list is. After a wide step the
+  // disc pairs' state is the batch's until writeBackWideState() hands it to the list.
+  DiscPairBatch discBatch_;
+  bool discBatchStale_ = true;
+  mutable bool wideStateAhead_ = false;
 };
 
 }  // namespace grainlab

@@ -9,6 +9,7 @@
 
 #include "engine/world_helpers.hpp"
 #include "grainlab/errors.hpp"
+#include "grainlab/simd_path.hpp"
 #include "grainlab/state_archive.hpp"
 
 namespace grainlab {
@@ -148,6 +149,11 @@ void fillLattice(World& world, bool asClumps) {
 }
 
 TEST(ClumpContact, AOneDiscClumpIsThatDiscBitForBit) {
+  // Member contacts run the scalar disc law: the lone discs take the same (baseline) path.
+  struct BaselinePath {
+    BaselinePath() { overrideSimdPath(SimdPath::Baseline); }
+    ~BaselinePath() { overrideSimdPath(std::nullopt); }
+  } baseline;
   const Material material = test::material(1e8, 0.5, 0.5);
   World discs(material), clumps(material);
   WorldSettings threaded;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/simd_path.hpp"
 #include "grainlab/studies/bench/pile_speed.hpp"
 
 namespace grainlab::bench {
@@ -15,6 +16,20 @@ TEST(PileSpeed, TimesEachRepeatOfASettledPile) {
   for (double r : s.rates) EXPECT_GT(r, 0);
   EXPECT_GT(s.coordination, 1);  // settled: the discs rest on each other
   EXPECT_GT(s.timestep, 0);
+}
+
+TEST(PileSpeed, TimesBothContactPathsInTurnAndLeavesThePathAsItWas) {
+  const SimdPath before = simdPath();
+  const PathSpeeds s = measurePathSpeeds(pileScene(6, 6, false), 20, 3, 1, nullptr);
+  EXPECT_EQ(simdPath(), before);
+  ASSERT_EQ(s.wide.rates.size(), 3u);
+  ASSERT_EQ(s.baseline.rates.size(), 3u);
+  for (double r : s.wide.rates) EXPECT_GT(r, 0);
+  for (double r : s.baseline.rates) EXPECT_GT(r, 0);
+  EXPECT_EQ(s.wide.cpuRates.size(), 3u);  // one thread: timed by its CPU time too
+  EXPECT_EQ(s.baseline.cpuRates.size(), 3u);
+  EXPECT_EQ(s.wide.particles, 36);
+  EXPECT_EQ(s.wide.coordination, s.baseline.coordination);  // one settled pile for both
 }
 
 TEST(PileSpeed, MedianOfOddAndEvenRepeats) {

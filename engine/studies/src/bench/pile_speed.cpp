@@ -2,20 +2,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/simd_path.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
 
 namespace grainlab::bench {
 
-namespace {
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   if (n == 0) return 0;
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-}  // namespace
 
 double PileSpeed::medianRate() const { return median(rates); }
 double PileSpeed::medianCpuRate() const { return median(cpuRates); }
@@ -40,33 +40,65 @@ std::vector<Scene> benchPiles() {
   return {pileScene(50, 50, false), general, pileScene(50, 50, true), rolling, clumpPileScene(50, 50)};
 }
 
-PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
-                           std::ostream* progress) {
+namespace {
+
+// The scene's world, settled (not timed): the pile is dense, with a realistic number of contacts.
+std::unique_ptr<World> settledWorld(const Scene& scene, int threads, WorldSettings::Engine engine) {
   WorldSettings settings;
   settings.threads = threads;
   settings.engine = engine;
-  World world(scene.material, settings);
-  for (const ParticleSpec& p : scene.particles) world.addParticle(p);
-  for (const Wall& w : scene.walls) world.addWall(w);
-  world.setGravity(scene.gravity);
-  // Settle first (not timed): the pile is dense, with a realistic number of contacts.
-  const int settleSteps = static_cast<int>(scene.stages.front().duration / world.timestep());
-  for (int k = 0; k < settleSteps; ++k) world.step();
-  world.checkHealth();
+  auto world = std::make_unique<World>(scene.material, settings);
+  for (const ParticleSpec& p : scene.particles) world->addParticle(p);
+  for (const Wall& w : scene.walls) world->addWall(w);
+  world->setGravity(scene.gravity);
+  const int settleSteps = static_cast<int>(scene.stages.front().duration / world->timestep());
+  for (int k = 0; k < settleSteps; ++k) world->step();
+  world->checkHealth();
+  return world;
+}
+
+PileSpeed describe(const Scene& scene, const World& world) {
   std::vector<ContactRecord> contacts;
   world.contacts(contacts);
-  PileSpeed r{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep()};
+  return PileSpeed{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep()};
+}
+
+// One timed repeat of `steps` steps: its particle-steps per wall-clock second, and with one
+// thread per second of the stepping thread's CPU time.
+void timeRepeat(World& world, int steps, int threads, PileSpeed& into) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = threadCpuSeconds();
+  for (int k = 0; k < steps; ++k) world.step();
+  const double cpu = threadCpuSeconds() - cpu0;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  into.rates.push_back(world.size() * static_cast<double>(steps) / s);
+  if (threads == 1) into.cpuRates.push_back(world.size() * static_cast<double>(steps) / cpu);
+}
+
+}  // namespace
+
+PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads, WorldSettings::Engine engine,
+                           std::ostream* progress) {
+  const std::unique_ptr<World> world = settledWorld(scene, threads, engine);
+  PileSpeed r = describe(scene, *world);
   if (progress) *progress << "bench: " << scene.name << " settled, timing\n";
+  for (int rep = 0; rep < repeats; ++rep) timeRepeat(*world, steps, threads, r);
+  world->checkHealth();
+  return r;
+}
+
+PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress) {
+  const std::unique_ptr<World> world = settledWorld(scene, threads, WorldSettings::Engine::Dem);
+  PathSpeeds r{describe(scene, *world), describe(scene, *world)};
+  if (progress) *progress << "bench: " << scene.name << " settled, timing the wide and the baseline path in turn\n";
   for (int rep = 0; rep < repeats; ++rep) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const double cpu0 = threadCpuSeconds();
-    for (int k = 0; k < steps; ++k) world.step();
-    const double cpu = threadCpuSeconds() - cpu0;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.rates.push_back(world.size() * static_cast<double>(steps) / s);
-    if (threads == 1) r.cpuRates.push_back(world.size() * static_cast<double>(steps) / cpu);
+    for (SimdPath path : {SimdPath::Wide, SimdPath::Baseline}) {
+      overrideSimdPath(path);
+      timeRepeat(*world, steps, threads, path == SimdPath::Wide ? r.wide : r.baseline);
+    }
   }
-  world.checkHealth();
+  overrideSimdPath(std::nullopt);
+  world->checkHealth();
   return r;
 }
 

@@ -12,6 +12,9 @@
 
 namespace grainlab::bench {
 
+/// The median of `values` (the mean of the middle two for an even count).
+double median(std::vector<double> values);
+
 struct PileSpeed {
   std::string name;
   int particles = 0;
@@ -27,12 +30,22 @@ struct PileSpeed {
 
 /// The bench's piles, by name: "disc-pile", "disc-pile+1poly" (the same discs and one
 /// far-away polygon: the general path, shape dispatch per pair, instead of the discs-only
-/// one), "polygon-pile" and "disc-pile-rolling" (the disc pile with rolling resistance).
+/// one), "polygon-pile", "disc-pile-rolling" (the disc pile with rolling resistance) and
+/// "clump-pile" (each disc of the disc pile a clump of three discs).
 std::vector<Scene> benchPiles();
 
 /// Settles `scene`'s pile (its first stage's duration), then times `repeats` × `steps` steps
 /// on `threads` threads. Progress lines go to `progress` (may be null).
 PileSpeed measurePileSpeed(const Scene& scene, int steps, int repeats, int threads,
                            WorldSettings::Engine engine, std::ostream* progress);
+
+/// The same pile timed on the wide and the baseline contact path in turn (wide, baseline,
+/// wide, …: both see the same pile and the same load on the machine), `repeats` × `steps`
+/// steps each. In a build without the wide path both are the baseline. Each repeat is timed
+/// by the wall clock and, on one thread, by the stepping thread's CPU time, as measurePileSpeed.
+struct PathSpeeds {
+  PileSpeed wide, baseline;
+};
+PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress);
 
 }  // namespace grainlab::bench

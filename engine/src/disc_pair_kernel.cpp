@@ -1,0 +1,188 @@
+// Compiled once per instruction set Highway targets (foreach_target re-includes this file);
+// discPairForces() dispatches at run time to the widest the CPU has.
+#include "disc_pair_kernel.hpp"
+
+#include <cstring>
+
+
+#ifdef GRAINLAB_HAS_WIDE_SIMD
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "disc_pair_kernel.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace grainlab {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// 1/√x for x > 0 in float's normal range (a touching pair's |d|² is, for grains between
+// 1e-18 m and 1e18 m), to double's rounding level: the float estimate (relative error at most
+// 1.5 · 2^-12 on every target) and three Newton steps y ← y (3/2 − x/2 · y²), each squaring
+// the error. (AVX-512's 2^-14 double estimate with two steps measured no faster.)
+template <class D, class V>
+HWY_INLINE V reciprocalSqrt(D d, V x) {
+  const hn::Rebind<float, D> df;
+  V y = hn::PromoteTo(d, hn::ApproximateReciprocalSqrt(hn::DemoteTo(df, x)));
+  const V halfX = hn::Mul(hn::Set(d, 0.5), x);
+  const V threeHalves = hn::Set(d, 1.5);
+  for (int k = 0; k < 3; ++k) y = hn::Mul(y, hn::NegMulAdd(halfX, hn::Mul(y, y), threeHalves));
+  return y;
+}
+
+template <bool kFrictional>
+void forces(const DiscPairKernelInput& in, int begin, int end) {
+  const hn::ScalableTag<double> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const size_t lanes = hn::Lanes(d);
+  const auto zero = hn::Zero(d);
+  const auto negZero = hn::Set(d, -0.0);
+  const auto half = hn::Set(d, 0.5);
+  const auto kn = hn::Set(d, in.normalStiffness);
+  const auto negKt = hn::Set(d, -in.tangentialStiffness);
+  const auto negInvKt = hn::Set(d, -1.0 / in.tangentialStiffness);
+  const auto mu = hn::Set(d, in.friction);
+  const auto dt = hn::Set(d, in.dt);
+  HWY_ALIGN double out[6 * hn::MaxLanes(d)];
+  double* const force = in.force;  // in locals: the stores below cannot then reload them
+  double* const torque = in.torque;
+  double* const ends = in.ends;
+  const std::int32_t* const iEnd = in.iEnd;
+  const std::int32_t* const jEnd = in.jEnd;
+  const double apart[4] = {-0.0, -0.0, -0.0, 0.0};
+  for (int s = begin; s < end; s += static_cast<int>(lanes)) {
+    const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
+    const auto I2 = hn::Add(I, I), J2 = hn::Add(J, J);
+    const auto xi = hn::GatherIndex(d, in.position, I2), yi = hn::GatherIndex(d, in.position + 1, I2);
+    const auto xj = hn::GatherIndex(d, in.position, J2), yj = hn::GatherIndex(d, in.position + 1, J2);
+    const auto ri = hn::GatherIndex(d, in.radius, I), rj = hn::GatherIndex(d, in.radius, J);
+    // touchDiscs()
+    const auto dx = hn::Sub(xj, xi), dy = hn::Sub(yj, yi);
+    const auto dist2 = hn::MulAdd(dx, dx, hn::Mul(dy, dy));
+    const auto reach = hn::Add(ri, rj);
+    const auto touchingRange = hn::And(hn::Lt(dist2, hn::Mul(reach, reach)), hn::Gt(dist2, zero));
+    if (hn::AllFalse(d, touchingRange)) {  // a whole vector apart: common in a loose region
+      hn::StoreU(zero, d, in.history + s);
+      hn::StoreU(zero, d, in.fn + s);
+      hn::StoreU(zero, d, in.ft + s);
+      hn::StoreU(zero, d, in.overlap + s);
+      if (!force) {
+        for (size_t l = 0; l < lanes; ++l) {
+          std::memcpy(ends + 4 * iEnd[s + l], apart, sizeof apart);
+          std::memcpy(ends + 4 * jEnd[s + l], apart, sizeof apart);
+        }
+      }
+      continue;
+    }
+    const auto inverse = reciprocalSqrt(d, dist2);
+    const auto dist = hn::Mul(dist2, inverse);
+    const auto nx = hn::Mul(dx, inverse), ny = hn::Mul(dy, inverse);
+    const auto overlap = hn::Sub(reach, dist);
+    const auto touching = hn::And(touchingRange, hn::Gt(overlap, zero));
+    const auto halfOverlap = hn::Mul(half, overlap);
+    const auto armI = hn::Sub(ri, halfOverlap), armJ = hn::Sub(rj, halfOverlap);
+    // contactForce(DiscContact): the relative motion at the contact.
+    const auto vxi = hn::GatherIndex(d, in.velocity, I2), vyi = hn::GatherIndex(d, in.velocity + 1, I2);
+    const auto vxj = hn::GatherIndex(d, in.velocity, J2), vyj = hn::GatherIndex(d, in.velocity + 1, J2);
+    const auto wi = hn::GatherIndex(d, in.spin, I), wj = hn::GatherIndex(d, in.spin, J);
+    const auto dvx = hn::Sub(vxj, vxi), dvy = hn::Sub(vyj, vyi);
+    const auto spin = hn::MulAdd(wi, armI, hn::Mul(wj, armJ));
+    // t = (−n_y, n_x)
+    const auto vn = hn::MulAdd(dvx, nx, hn::Mul(dvy, ny));
+    const auto vt = hn::Sub(hn::MulSub(dvy, nx, hn::Mul(dvx, ny)), spin);
+    // The law (contact_law.hpp).
+    const auto dampN = hn::LoadU(d, in.dampN + s);
+    const auto fn = hn::NegMulAdd(dampN, vn, hn::Mul(kn, overlap));
+    auto h = hn::LoadU(d, in.history + s);
+    auto ft = zero;
+    if constexpr (kFrictional) {
+      const auto dampT = hn::LoadU(d, in.dampT + s);
+      h = hn::MulAdd(vt, dt, h);
+      ft = hn::NegMulAdd(dampT, vt, hn::Mul(negKt, h));
+      const auto cap = hn::IfThenElseZero(hn::Gt(fn, zero), hn::Mul(mu, fn));
+      const auto slides = hn::Gt(hn::Abs(ft), cap);
+      ft = hn::IfThenElse(slides, hn::CopySign(cap, ft), ft);
+      // Spring and dashpot sit at the cap: h = −(f_t + c_t v_t) / k_t.
+      h = hn::IfThenElse(slides, hn::Mul(hn::MulAdd(dampT, vt, ft), negInvKt), h);
+    }
+    const auto fx = hn::NegMulAdd(ft, ny, hn::Mul(fn, nx));
+    const auto fy = hn::MulAdd(ft, nx, hn::Mul(fn, ny));
+    const auto ti = hn::Mul(armI, ft), tj = hn::Mul(hn::Neg(armJ), ft);
+    // Each end's share: −F on i, F on j.
+    if (force) {  // one thread: each touching pair's shares at once, in slot (= pair) order
+      hn::Store(fx, d, out);
+      hn::Store(fy, d, out + lanes);
+      hn::Store(ti, d, out + 2 * lanes);
+      hn::Store(tj, d, out + 3 * lanes);
+      std::uint8_t bits[8] = {};
+      hn::StoreMaskBits(d, touching, bits);
+      for (size_t l = 0; l < lanes; ++l) {
+        if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
+        const std::int64_t pi = in.i[s + l], pj = in.j[s + l];
+        force[2 * pi] -= out[l];
+        force[2 * pi + 1] -= out[lanes + l];
+        torque[pi] -= out[2 * lanes + l];
+        force[2 * pj] += out[l];
+        force[2 * pj + 1] += out[lanes + l];
+        torque[pj] += out[3 * lanes + l];
+      }
+    } else {  // several threads: each share to its particle's record
+      hn::Store(hn::IfThenElse(touching, fx, negZero), d, out);
+      hn::Store(hn::IfThenElse(touching, fy, negZero), d, out + lanes);
+      hn::Store(hn::IfThenElse(touching, tj, negZero), d, out + 2 * lanes);
+      hn::Store(hn::IfThenElse(touching, hn::Neg(fx), negZero), d, out + 3 * lanes);
+      hn::Store(hn::IfThenElse(touching, hn::Neg(fy), negZero), d, out + 4 * lanes);
+      hn::Store(hn::IfThenElse(touching, hn::Neg(ti), negZero), d, out + 5 * lanes);
+      for (size_t l = 0; l < lanes; ++l) {
+        double* ei = ends + 4 * iEnd[s + l];
+        double* ej = ends + 4 * jEnd[s + l];
+        ej[0] = out[l];
+        ej[1] = out[lanes + l];
+        ej[2] = out[2 * lanes + l];
+        ei[0] = out[3 * lanes + l];
+        ei[1] = out[4 * lanes + l];
+        ei[2] = out[5 * lanes + l];
+      }
+    }
+    // The pair's state (a pair apart keeps nothing).
+    hn::StoreU(hn::IfThenElseZero(touching, h), d, in.history + s);
+    hn::StoreU(hn::IfThenElseZero(touching, fn), d, in.fn + s);
+    hn::StoreU(hn::IfThenElseZero(touching, ft), d, in.ft + s);
+    hn::StoreU(hn::IfThenElseZero(touching, overlap), d, in.overlap + s);
+  }
+}
+
+void DiscPairForces(const DiscPairKernelInput& in, int begin, int end) {
+  if (in.frictional) forces<true>(in, begin, end);
+  else forces<false>(in, begin, end);
+}
+
+const char* KernelTarget() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace grainlab
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace grainlab {
+HWY_EXPORT(DiscPairForces);
+HWY_EXPORT(KernelTarget);
+
+void discPairForces(const DiscPairKernelInput& in, int begin, int end) {
+  HWY_DYNAMIC_DISPATCH(DiscPairForces)(in, begin, end);
+}
+
+std::string discPairKernelTarget() { return HWY_DYNAMIC_DISPATCH(KernelTarget)(); }
+
+}  // namespace grainlab
+#endif
+#else  // a build without the wide path: simdPath() is always the baseline, which never calls these
+#include <stdexcept>
+
+namespace grainlab {
+void discPairForces(const DiscPairKernelInput&, int, int) {
+  throw std::logic_error("discPairForces: this build has no wide path");
+}
+std::string discPairKernelTarget() { return "baseline"; }
+}  // namespace grainlab
+#endif

@@ -1,0 +1,57 @@
+#pragma once
+// The disc-disc contact law evaluated several pairs per instruction: the geometry of
+// touchDiscs() and the linear spring-dashpot and Cundall-Strack of contact_law.hpp, lane by
+// lane. It is not the scalar code's arithmetic: 1/|d| comes from a single-precision estimate
+// refined by Newton's method (no divider: the scalar code's square root and two divisions
+// bounded the kernel), the sliding reset multiplies by 1/k_t, and products are fused. Each
+// differs from the baseline's by rounding only; lanes do not interact, so the result does not
+// depend on how the slots are split between threads, and the same instruction set gives the
+// same bits on every run.
+#include <cstdint>
+#include <string>
+
+namespace grainlab {
+
+/// Slots are processed in blocks of this many: a multiple of any target's lanes of double.
+inline constexpr int kDiscPairBlock = 16;
+
+/// One step's disc-disc pairs in structure-of-arrays form (arrays padded to whole blocks;
+/// a padding slot has i = j = 0, which never touches), the particles they read, and where
+/// the results go.
+struct DiscPairKernelInput {
+  // Particles: position and velocity as x0 y0 x1 y1 …; spin and radius per particle.
+  const double* position;
+  const double* velocity;
+  const double* spin;
+  const double* radius;
+  // Slots.
+  const std::int64_t* i;
+  const std::int64_t* j;
+  const double* dampN;
+  const double* dampT;
+  // The pairs' state per slot: the tangential spring (read and written), and the last
+  // step's fn, ft and overlap (written; all zero where the pair is apart).
+  double* history;
+  double* fn;
+  double* ft;
+  double* overlap;
+  // Law.
+  double normalStiffness, tangentialStiffness, friction, dt;
+  bool frictional;
+  // With one thread: the particles' force (x0 y0 x1 y1 …) and torque, to which each touching
+  // pair adds its shares at once, in pair order; null with several threads, which write the
+  // shares instead: as fx fy torque 0, i's at ends[4 iEnd[s]], j's at ends[4 jEnd[s]]; −0
+  // where the pair is apart (adding −0 changes nothing, not even a zero's sign).
+  double* force;
+  double* torque;
+  double* ends;
+  const std::int32_t* iEnd;
+  const std::int32_t* jEnd;
+};
+
+/// Evaluates slots [begin, end) (block multiples): the pairs' state and their end forces.
+void discPairForces(const DiscPairKernelInput& in, int begin, int end);
+/// The instruction set discPairForces runs on this CPU (Highway's name, e.g. "AVX3").
+std::string discPairKernelTarget();
+
+}  // namespace grainlab

@@ -1,0 +1,209 @@
+// The wide contact path (disc pairs in batches, several per instruction) rounds differently
+// from the baseline (an estimated 1/|d| refined by Newton's method, fused products): it must
+// give the same bits on every run and with any number of threads, and the baseline's forces
+// to rounding level.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "grainlab/bench_scenes.hpp"
+#include "grainlab/output_writer.hpp"
+#include "grainlab/run.hpp"
+#include "grainlab/world.hpp"
+#include "disc_pair_kernel.hpp"
+#include "grainlab/simd_path.hpp"
+
+namespace grainlab {
+namespace {
+
+constexpr double kEpsilon = 0x1p-52;  // double's unit roundoff ×2: one unit in the last place at 1
+
+// Every series row as text, and the bits of every final position, velocity, spin and contact.
+class Recorder : public RunObserver {
+ public:
+  void onSample(const Sample& s, const World&) override { rows += formatSeriesRow(s) + "\n"; }
+  void onFinish(const RunSummary&, const World& world) override {
+    for (const Vec2& x : world.positions()) mix(x.data(), 2);
+    for (const Vec2& v : world.velocities()) mix(v.data(), 2);
+    for (double w : world.spins()) mix(&w, 1);
+    std::vector<ContactRecord> contacts;
+    world.contacts(contacts);
+    this->contacts = contacts.size();
+    for (const ContactRecord& c : contacts) {
+      const double values[] = {c.fn, c.ft, c.overlap, c.point.x(), c.point.y()};
+      mix(values, 5);
+    }
+  }
+  std::string rows;
+  std::uint64_t hash = 1469598103934665603ull;
+  size_t contacts = 0;
+
+ private:
+  void mix(const double* v, int n) {
+    for (int k = 0; k < n; ++k) {
+      std::uint64_t bits;
+      std::memcpy(&bits, v + k, sizeof bits);
+      hash = (hash ^ bits) * 1099511628211ull;
+    }
+  }
+};
+
+// A shuffled disc pile pressed 8% closer than its lattice under 50 g: in contact, sliding and
+// rebuilding its neighbour list through the run (as in the determinism tests).
+Scene pressedPile() {
+  Scene scene = pileScene(16, 16, false);
+  std::mt19937_64 rng(7);
+  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+  for (ParticleSpec& p : scene.particles) p.position *= 0.92;
+  scene.gravity *= 50;
+  scene.stages[0].duration = 0.01;  // s
+  return scene;
+}
+
+Recorder runOn(SimdPath path, const Scene& scene) {
+  overrideSimdPath(path);
+  Recorder r;
+  const RunStatus status = runScene(scene, r).status;
+  overrideSimdPath(std::nullopt);
+  EXPECT_EQ(status, RunStatus::Completed);
+  return r;
+}
+
+class WidePath : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    overrideSimdPath(SimdPath::Wide);
+    const bool built = simdPath() == SimdPath::Wide;
+    overrideSimdPath(std::nullopt);
+    if (!built) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  }
+};
+
+TEST_F(WidePath, GivesTheSameBitsWithAnyThreadCount) {
+  for (const bool frictionless : {false, true}) {
+    Scene scene = pressedPile();
+    if (frictionless) scene.material.friction = 0;
+    else scene.material.localDamping = 0.3;
+    const Recorder serial = runOn(SimdPath::Wide, scene);
+    ASSERT_GT(serial.contacts, 100u);  // the pile is in contact at the end
+    EXPECT_EQ(serial.hash, runOn(SimdPath::Wide, scene).hash) << "a second serial run";
+    for (int threads : {2, 3}) {
+      scene.solver.threads = threads;
+      const Recorder threaded = runOn(SimdPath::Wide, scene);
+      EXPECT_EQ(serial.hash, threaded.hash) << threads << " threads (on " << discPairKernelTarget() << ")";
+      EXPECT_EQ(serial.rows, threaded.rows) << threads << " threads";
+    }
+  }
+}
+
+// A disc five times the size of the twelve discs pressed onto it all round touches more of
+// them than a particle's fixed run of share records holds: the rest go to the overflow, which
+// must keep the order. Threaded runs use the records; one thread adds the shares at once.
+TEST_F(WidePath, ABigDiscsManyContactsGiveTheSameBitsWithAnyThreadCount) {
+  Scene scene = pressedPile();
+  const double r = scene.particles[0].radius, big = 5 * r;
+  const Vec2 centre(0.03, 0.03);
+  std::vector<ParticleSpec> ring;
+  for (int k = 0; k < 12; ++k) {
+    ParticleSpec p = scene.particles[0];
+    p.radius = r;
+    const double a = 2 * kPi * k / 12 + 0.1;
+    p.position = centre + (big + 0.9 * r) * Vec2(std::cos(a), std::sin(a));  // pressed by 0.1 r
+    ring.push_back(p);
+  }
+  ParticleSpec bigDisc = scene.particles[0];
+  bigDisc.position = centre;
+  bigDisc.radius = big;
+  ring.push_back(bigDisc);
+  scene.particles = ring;
+  scene.gravity = Vec2::Zero();
+  auto run = [&](int threads, int* bigContacts) {
+    overrideSimdPath(SimdPath::Wide);
+    WorldSettings settings;
+    settings.threads = threads;
+    World world(scene.material, settings);
+    for (const ParticleSpec& p : scene.particles) world.addParticle(p);
+    for (const Wall& wall : scene.walls) world.addWall(wall);
+    world.setGravity(scene.gravity);
+    const int b = world.size() - 1;
+    *bigContacts = 0;  // the most at once
+    std::vector<ContactRecord> contacts;
+    for (int k = 0; k < 200; ++k) {
+      world.step();
+      contacts.clear();
+      world.contacts(contacts);
+      *bigContacts = std::max(*bigContacts, static_cast<int>(std::count_if(contacts.begin(), contacts.end(),
+                                                                           [&](const ContactRecord& c) {
+                                                                             return c.i == b || c.j == b;
+                                                                           })));
+    }
+    overrideSimdPath(std::nullopt);
+    std::uint64_t hash = 1469598103934665603ull;
+    for (const Vec2& x : world.positions()) {
+      for (int c = 0; c < 2; ++c) {
+        std::uint64_t bits;
+        std::memcpy(&bits, x.data() + c, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+      }
+    }
+    return hash;
+  };
+  int bigContacts = 0, unused = 0;
+  const std::uint64_t serial = run(1, &bigContacts);
+  EXPECT_GT(bigContacts, 8) << "the big disc must touch more neighbours than a run of records holds";
+  EXPECT_EQ(serial, run(2, &unused)) << "2 threads";
+  EXPECT_EQ(serial, run(3, &unused)) << "3 threads";
+}
+
+// Two worlds step the pressed pile in lockstep on the baseline (the same bits), then take one
+// step each, one on the wide path. Their forces may differ by rounding only: the overlap is
+// r_i + r_j − |d|, so a few units in the last place of |d| (ε · 2r) move a normal force by
+// k_n · ε · 2r, and the spring and dashpot terms by less; a particle sums at most a few
+// neighbours' worth. 64 k_n ε 2r (×r for a torque) bounds that; a term missing or of the
+// wrong sign (a damping, a torque arm) would differ by far more (k_n times an overlap,
+// about 1e-3 r, against 1e-14 r).
+TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
+  for (int threads : {1, 2}) {
+    Scene scene = pressedPile();
+    WorldSettings settings;
+    settings.threads = threads;
+    auto make = [&] {
+      auto w = std::make_unique<World>(scene.material, settings);
+      for (const ParticleSpec& p : scene.particles) w->addParticle(p);
+      for (const Wall& wall : scene.walls) w->addWall(wall);
+      w->setGravity(scene.gravity);
+      return w;
+    };
+    const std::unique_ptr<World> baseline = make(), wide = make();
+    overrideSimdPath(SimdPath::Baseline);
+    for (int k = 0; k < 2000; ++k) {  // into contact, with sliding
+      baseline->step();
+      wide->step();
+    }
+    baseline->step();
+    overrideSimdPath(SimdPath::Wide);
+    wide->step();
+    overrideSimdPath(std::nullopt);
+    double largestRadius = 0;
+    for (const ParticleSpec& p : scene.particles) largestRadius = std::max(largestRadius, p.radius);
+    const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * largestRadius;
+    double forceGap = 0, torqueGap = 0, largestForce = 0;
+    for (int p = 0; p < baseline->size(); ++p) {
+      forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
+      torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
+      largestForce = std::max(largestForce, baseline->forces()[p].norm());
+    }
+    EXPECT_GT(forceGap, 0) << "the wide path was not taken: its rounding differs from the baseline's";
+    EXPECT_GT(largestForce, 1e6 * forceBound) << "the pile is pressed: its forces are far above the bound";
+    EXPECT_LE(forceGap, forceBound) << threads << " threads";
+    EXPECT_LE(torqueGap, forceBound * largestRadius) << threads << " threads";
+  }
+}
+
+}  // namespace
+}  // namespace grainlab
