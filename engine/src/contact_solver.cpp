@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -11,9 +10,10 @@
 #include "contact_law.hpp"
 #include "disc_pair_kernel.hpp"
 #include "grainlab/errors.hpp"
-#include "grainlab/state_archive.hpp"
 #include "grainlab/simd_path.hpp"
+#include "grainlab/state_archive.hpp"
 #include "rolling_resistance.hpp"
+#include "runaway_overlap.hpp"
 #include "worker_pool.hpp"
 
 namespace grainlab {
@@ -540,20 +540,7 @@ void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalD
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
     const double size = p.j >= 0 ? std::min(radius[p.i], radius[p.j]) : radius[p.i];
-    if (p.overlap > 0.5 * size) {
-      std::ostringstream os;
-      os << "runaway overlap " << (step == 0 ? std::string("at the start") : "at step " + std::to_string(step)) << ": ";
-      if (p.j >= 0) os << "particles " << p.i << " and " << p.j;
-      else os << "particle " << p.i << " and wall " << (-1 - p.j);
-      os << " overlap by " << 100 * p.overlap / size << "% of the smaller particle's radius";
-      if (step == 0) {
-        os << " at the start (more than 50% is refused: separate the particles in the scene)";
-      } else {
-        os << "; the contacts are too soft for the load or the timestep (" << dt << " s, critical " << criticalDt
-           << " s) is too large";
-      }
-      throw SimulationError(os.str());
-    }
+    if (p.overlap > 0.5 * size) throwRunawayOverlap(step, p.i, p.j, p.overlap / size, "particle", dt, criticalDt);
   }
 }
 

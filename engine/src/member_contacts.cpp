@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "contact_law.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "runaway_overlap.hpp"
 
 namespace grainlab {
 namespace {
@@ -230,19 +230,8 @@ void MemberContactSolver::checkOverlaps(std::int64_t step, double dt, double cri
     const double size = p.j >= 0 ? std::min(radius_[static_cast<size_t>(p.i)], radius_[static_cast<size_t>(p.j)])
                                  : radius_[static_cast<size_t>(p.i)];
     if (p.overlap <= 0.5 * size) continue;
-    std::ostringstream os;
-    os << "runaway overlap " << (step == 0 ? std::string("at the start") : "at step " + std::to_string(step)) << ": ";
-    const int bi = owner_[static_cast<size_t>(p.i)];
-    if (p.j >= 0) os << "particles " << bi << " and " << owner_[static_cast<size_t>(p.j)];
-    else os << "particle " << bi << " and wall " << (-1 - p.j);
-    os << " overlap by " << 100 * p.overlap / size << "% of the smaller member disc's radius";
-    if (step == 0) {
-      os << " at the start (more than 50% is refused: separate the particles in the scene)";
-    } else {
-      os << "; the contacts are too soft for the load or the timestep (" << dt << " s, critical " << criticalDt
-         << " s) is too large";
-    }
-    throw SimulationError(os.str());
+    const int j = p.j >= 0 ? owner_[static_cast<size_t>(p.j)] : p.j;
+    throwRunawayOverlap(step, owner_[static_cast<size_t>(p.i)], j, p.overlap / size, "member disc", dt, criticalDt);
   }
 }
 
