@@ -12,6 +12,7 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/simd_path.hpp"
 #include "grainlab/state_archive.hpp"
+#include "local_damping.hpp"
 #include "rolling_resistance.hpp"
 #include "runaway_overlap.hpp"
 #include "worker_pool.hpp"
@@ -283,7 +284,7 @@ void ContactSolver::pairForces(const Law& law, double dt) {
         f[k] += d.force;
         tau[k] += d.torque;
       }
-      if (material_.localDamping > 0) applyLocalDamping(k);
+      if (material_.localDamping > 0) applyLocalDamping(particles_, k, material_.localDamping);
     }
   };
   if (pool_) pool_->parallelFor(particles_.size(), finish);
@@ -341,7 +342,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   auto finish = [&](int begin, int end) {
     for (int k = begin; k < end; ++k) {
       if (!serial) b.addEnds(k, f[k], tau[k]);
-      if (material_.localDamping > 0) applyLocalDamping(k);
+      if (material_.localDamping > 0) applyLocalDamping(particles_, k, material_.localDamping);
     }
   };
   if (pool_) pool_->parallelFor(particles_.size(), finish);
@@ -472,20 +473,6 @@ void ContactSolver::computeForces(double dt, bool moved) {
   profile_.neighbors += seconds(t0, t1);
   profile_.forces += seconds(t1, t2);
   if (polygonCollider_) profile_.featureSearches = polygonCollider_->featureSearches();
-}
-
-void ContactSolver::applyLocalDamping(int k) {
-  // Cundall's non-viscous damping: each force component is reduced by α|F| against the
-  // direction of motion, so it removes energy without slowing a steady drift.
-  if (particles_.motion[k] != Motion::Dynamic) return;
-  const double a = material_.localDamping;
-  auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
-  Vec2& f = particles_.force[k];
-  const Vec2& v = particles_.velocity[k];
-  f.x() -= a * std::abs(f.x()) * sign(v.x());
-  f.y() -= a * std::abs(f.y()) * sign(v.y());
-  double& torque = particles_.torque[k];
-  torque -= a * std::abs(torque) * sign(particles_.spin[k]);
 }
 
 void ContactSolver::contacts(std::vector<ContactRecord>& out) const {

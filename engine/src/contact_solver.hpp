@@ -58,7 +58,6 @@ class ContactSolver {
   void assignDeferredSlots();
   void assignRollingPairs();
   void carryPolygonCache();
-  void applyLocalDamping(int k);
   void writeBackWideState() const;
   template <class Law, bool kDiscsOnly>
   void pairForces(const Law& law, double dt);

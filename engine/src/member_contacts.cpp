@@ -8,6 +8,7 @@
 #include "contact_law.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/state_archive.hpp"
+#include "local_damping.hpp"
 #include "runaway_overlap.hpp"
 
 namespace grainlab {
@@ -145,21 +146,8 @@ void MemberContactSolver::pairForces(const Law& law, double dt) {
     tau[b] += -c.armJ * p.ft + cross(leverB, F);
   }
   if (material_.localDamping > 0) {
-    for (int k = 0; k < particles_.size(); ++k) applyLocalDamping(k);
+    for (int k = 0; k < particles_.size(); ++k) applyLocalDamping(particles_, k, material_.localDamping);
   }
-}
-
-void MemberContactSolver::applyLocalDamping(int k) {
-  // Cundall's non-viscous damping, as ContactSolver::applyLocalDamping, on the body.
-  if (particles_.motion[k] != Motion::Dynamic) return;
-  const double a = material_.localDamping;
-  auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
-  Vec2& f = particles_.force[k];
-  const Vec2& v = particles_.velocity[k];
-  f.x() -= a * std::abs(f.x()) * sign(v.x());
-  f.y() -= a * std::abs(f.y()) * sign(v.y());
-  double& torque = particles_.torque[k];
-  torque -= a * std::abs(torque) * sign(particles_.spin[k]);
 }
 
 void MemberContactSolver::computeForces(double dt) {

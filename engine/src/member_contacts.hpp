@@ -46,7 +46,6 @@ class MemberContactSolver {
  private:
   void placeMembers();
   void assignDamping();
-  void applyLocalDamping(int body);
   template <class Law>
   void pairForces(const Law& law, double dt);
   DiscContact touch(const PairState& p) const;
