@@ -408,6 +408,21 @@ struct Repository::Writer {
   std::map<const char*, std::unique_ptr<Statement>> statements;
   std::vector<std::function<void()>> afterCommit;
   bool committed = true;  // while afterCommit runs: whether the transaction was committed
+
+  /// Gives `done` its value once the batch is committed, or an error if it could not be.
+  template <class T>
+  void resolveAfterCommit(std::shared_ptr<std::promise<T>> done, T value) {
+    afterCommit.push_back([done, value = std::move(value), this] {
+      if (committed) return done->set_value(value);
+      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
+    });
+  }
+  /// Gives `done` the exception being handled, after the batch (a refused batch runs its
+  /// jobs again, so it is told once, then).
+  template <class T>
+  void rejectAfterCommit(std::shared_ptr<std::promise<T>> done) {
+    afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+  }
 };
 
 Repository::Repository(const std::string& path, Opener opener) : path_(path) {
@@ -720,14 +735,10 @@ std::future<std::int64_t> Repository::insertRun(const RunRecord& run) {
     try {
       id = insertRunRow(w.statement(sql::kInsertRun), w.db, run);
     } catch (...) {
-      // Told after the transaction, once: a refused batch runs its jobs again.
-      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+      w.rejectAfterCommit(done);
       return;
     }
-    w.afterCommit.push_back([done, id, &w] {
-      if (w.committed) return done->set_value(id);
-      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
-    });
+    w.resolveAfterCommit(done, id);
   });
   return future;
 }
@@ -759,13 +770,10 @@ std::future<std::vector<std::int64_t>> Repository::insertStudy(const StudyRecord
       } catch (const std::exception&) {
         // SQLite rolled the whole transaction back already (a full disk).
       }
-      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+      w.rejectAfterCommit(done);
       return;
     }
-    w.afterCommit.push_back([done, ids, &w] {
-      if (w.committed) return done->set_value(ids);
-      done->set_exception(std::make_exception_ptr(std::runtime_error("the database could not be written")));
-    });
+    w.resolveAfterCommit(done, std::move(ids));
   });
   return future;
 }
@@ -938,8 +946,7 @@ std::future<bool> Repository::deleteRun(std::int64_t id) {
         if (text == sql::kDeleteRun) deleted = w.db.changes() > 0;
       }
     } catch (...) {
-      // Told after the transaction, once: a refused batch runs its jobs again.
-      w.afterCommit.push_back([done, error = std::current_exception()] { done->set_exception(error); });
+      w.rejectAfterCommit(done);
       return;
     }
     w.afterCommit.push_back([done, deleted, &w] { done->set_value(deleted && w.committed); });
