@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../support/refused_field.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
@@ -100,15 +101,7 @@ TEST(ClumpSpecimen, VoidRatioCountsTheUnionsArea) {
   EXPECT_NEAR(world.area(0), makeClump(p.members).area, 0);
 }
 
-std::string fieldOf(const json& j) {
-  try {
-    parseScene(j);
-  } catch (const SceneError& e) {
-    EXPECT_FALSE(e.reason().empty());
-    return e.field();
-  }
-  return "(accepted)";
-}
+std::string fieldOf(const json& j) { return testing::refusedField(j); }
 
 json oneClump() {
   return json::parse(R"({"particles": [{"shape": "clump", "position": [0, 0],

@@ -2,6 +2,7 @@
 // parameters refused by the field's name.
 #include <gtest/gtest.h>
 
+#include "../support/refused_field.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
@@ -18,15 +19,7 @@ json withStage(const json& stage) {
   return scene;
 }
 
-std::string fieldOf(const json& stage) {
-  try {
-    parseScene(withStage(stage));
-  } catch (const SceneError& e) {
-    EXPECT_FALSE(e.reason().empty());
-    return e.field();
-  }
-  return "(accepted)";
-}
+std::string fieldOf(const json& stage) { return testing::refusedField(withStage(stage)); }
 
 TEST(LoadingPathScene, RotationReadsTwoOfRateTotalAndDuration) {
   StageSpec s = parseScene(withStage({{"type", "rotation"}, {"deviatoric_strain_rate", 0.5},

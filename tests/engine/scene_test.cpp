@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "../support/refused_field.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
@@ -16,15 +17,7 @@ json oneDisc() {
   return json::parse(R"({"particles": [{"shape": "disc", "radius": 0.002, "position": [0, 0]}]})");
 }
 
-std::string fieldOf(const json& j) {
-  try {
-    parseScene(j);
-  } catch (const SceneError& e) {
-    EXPECT_FALSE(e.reason().empty());
-    return e.field();
-  }
-  return "(accepted)";
-}
+std::string fieldOf(const json& j) { return testing::refusedField(j); }
 
 TEST(Scene, DefaultsFillOmittedKeys) {
   const Scene s = parseScene(oneDisc());
