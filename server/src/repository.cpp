@@ -932,10 +932,10 @@ void Repository::truncateRun(std::int64_t id, std::int64_t samples, std::int64_t
   });
 }
 
-std::future<bool> Repository::deleteRun(std::int64_t id) {
+std::future<bool> Repository::deleteRun(std::int64_t id, std::function<void()> afterDelete) {
   auto done = std::make_shared<std::promise<bool>>();
   auto future = done->get_future();
-  enqueue([id, done](Writer& w) {
+  enqueue([id, done, after = std::move(afterDelete)](Writer& w) {
     bool deleted = false;
     try {
       for (const char* text :
@@ -947,9 +947,11 @@ std::future<bool> Repository::deleteRun(std::int64_t id) {
       }
     } catch (...) {
       w.rejectAfterCommit(done);
+      if (after) w.afterCommit.push_back(after);
       return;
     }
     w.afterCommit.push_back([done, deleted, &w] { done->set_value(deleted && w.committed); });
+    if (after) w.afterCommit.push_back(after);
   });
   return future;
 }

@@ -151,7 +151,9 @@ class Repository {
   /// `frames` on: what a run stored after the checkpoint it resumes from.
   void truncateRun(std::int64_t id, std::int64_t samples, std::int64_t frames);
   /// Resolves to whether a run was deleted (with its series, histograms and frames).
-  std::future<bool> deleteRun(std::int64_t id);
+  /// `afterDelete`, if given, runs on the writer's thread once the deletion is committed or
+  /// refused: a caller that cannot wait on the future (it runs there too) learns it this way.
+  std::future<bool> deleteRun(std::int64_t id, std::function<void()> afterDelete = {});
   /// Resolves once everything queued before it is committed.
   std::future<void> flush();
 

@@ -392,12 +392,12 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   end.warnings = warningsJson(summary.warnings).dump();
 
   if (run->deleted()) {
-    // Queued after the run's last writes, so nothing of it is left behind.
+    // Queued after the run's last writes, so nothing of it is left behind. The live entry
+    // (marked deleted, so the API hides the run) stays until the rows are gone.
     removeCheckpoint(id);
     specimens_.remove(id);
-    repo_.deleteRun(id);
     hub_.close(id);
-    forget(id);
+    repo_.deleteRun(id, [this, id] { forget(id); });
     return;
   }
   // Queued before the end, so whoever sees the run ended finds it stored.
@@ -425,11 +425,12 @@ void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& en
   bool deleted;
   {
     std::lock_guard lock(liveMutex_);
-    if (ended || run->deleted()) live_.erase(run->id());
     deleted = run->deleted();
+    if (ended && !deleted) live_.erase(run->id());
   }
-  // DELETE arrived while the end was being written.
-  if (deleted) repo_.deleteRun(run->id());
+  // DELETE arrived while the end was being written: the live entry hides the run until its
+  // rows are gone (erased before that, the stored rows would show for a moment).
+  if (deleted) repo_.deleteRun(run->id(), [this, id = run->id()] { forget(id); });
 }
 
 std::shared_ptr<LiveRun> RunService::live(std::int64_t id) {
