@@ -182,9 +182,13 @@ TEST_F(WidePath, ABigDiscsManyContactsGiveTheSameBitsWithAnyThreadCount) {
 
 // Two worlds step `scene` in lockstep on the baseline (the same bits), then take one step
 // each, one on the wide path; returns the largest gaps between their particles' forces and
-// torques, and the largest force and torque on the baseline.
+// torques, the largest force and torque on the baseline, and the gap between the energies
+// stored in their contacts' springs (the pairs' state the step left: what the next step starts
+// from), with the baseline's touching contacts and their largest force.
 struct ForceGaps {
   double force = 0, torque = 0, largestForce = 0, largestTorque = 0;
+  double energy = 0, largestContactForce = 0;
+  size_t contacts = 0;
 };
 ForceGaps oneWideStep(const Scene& scene, int threads, int steps) {
   WorldSettings settings;
@@ -213,7 +217,22 @@ ForceGaps oneWideStep(const Scene& scene, int threads, int steps) {
     g.largestForce = std::max(g.largestForce, baseline->forces()[p].norm());
     g.largestTorque = std::max(g.largestTorque, std::abs(baseline->torques()[p]));
   }
+  g.energy = std::abs(wide->elasticEnergy() - baseline->elasticEnergy());
+  std::vector<ContactRecord> contacts;
+  baseline->contacts(contacts);
+  g.contacts = contacts.size();
+  for (const ContactRecord& c : contacts) g.largestContactForce = std::max(g.largestContactForce, std::hypot(c.fn, c.ft));
   return g;
+}
+
+// A bound on the stored energies' gap: a spring holding force f (stiffness k) stores f²/2k,
+// which a rounding-level gap Δf in that force moves by f Δf / k. Normal and tangential forces
+// move by at most the force bound, a rolling couple (k_r = β k_t R*²) by μ_r R* times it; the
+// couple is at most μ_r R* f. Summed over the contacts, with f the largest contact force.
+double energyBound(const ForceGaps& g, const Material& m, double forceBound) {
+  const double rolling = m.rollingFriction * m.rollingFriction / m.rollingStiffnessRatio;
+  return static_cast<double>(g.contacts) * g.largestContactForce * forceBound *
+         (1 / m.normalStiffness + (1 + rolling) / m.tangentialStiffness);
 }
 
 // The pressed pile, one step on each path after 2000 on the baseline. Their forces may differ
@@ -226,7 +245,9 @@ ForceGaps oneWideStep(const Scene& scene, int threads, int steps) {
 // with f_n (R* ≤ r/2, so by at most μ_r r/2 times f_n's gap), its spring and damper by a few
 // units in their last place (far below: the couple is at most μ_r R* f_n, f_n ≪ k_n 2r), so
 // the torque bound grows by (1 + μ_r); a couple missing or of the wrong sign is of order
-// μ_r R* f_n, about 1e-4 r · k_n r against 1e-14 r · k_n r.
+// μ_r R* f_n, about 1e-4 r · k_n r against 1e-14 r · k_n r. The springs' stored energy checks
+// the state the step leaves (a relative rotation not reset to the cap overshoots it by ω_r dt,
+// storing about μ_r R* f_n ω_r dt more, far above the bound).
 TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
   for (const bool rolling : {false, true}) {
     for (int threads : {1, 2}) {
@@ -241,6 +262,7 @@ TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
       EXPECT_GT(g.largestTorque, 1e3 * torqueBound) << "the pile's contacts turn its discs";
       EXPECT_LE(g.force, forceBound) << threads << " threads" << (rolling ? ", rolling" : "");
       EXPECT_LE(g.torque, torqueBound) << threads << " threads" << (rolling ? ", rolling" : "");
+      EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads" << (rolling ? ", rolling" : "");
     }
   }
 }
@@ -269,6 +291,7 @@ TEST_F(WidePath, ClumpMemberPairsGiveTheBaselinesForcesToRounding) {
     EXPECT_GT(g.largestTorque, 1e6 * forceBound * reach) << "the members' contacts turn their clumps";
     EXPECT_LE(g.force, forceBound) << threads << " threads";
     EXPECT_LE(g.torque, forceBound * reach) << threads << " threads";
+    EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads";
   }
 }
 
