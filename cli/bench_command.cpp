@@ -86,7 +86,7 @@ int benchCommand(const std::vector<std::string>& args) {
       overrideSimdPath(SimdPath::Wide);
       const std::string target = simdTargetName();
       overrideSimdPath(std::nullopt);
-      std::cout << "paths " << std::setw(14) << scenes[k].name << "wide (" << target << ") "
+      std::cout << "paths " << std::setw(18) << scenes[k].name << "wide (" << target << ") "
                 << std::setprecision(4) << p.wide.medianRate() / 1e6 << " M, baseline "
                 << p.baseline.medianRate() / 1e6 << " M particle-steps/s: wide/baseline "
                 << p.wide.medianRate() / p.baseline.medianRate();
