@@ -52,6 +52,18 @@ int benchCommand(const std::vector<std::string>& args) {
     }
     std::cout << "\n";
     std::cout << "3-disc clumps / discs (per clump-step): " << results[4].medianRate() / results[0].medianRate() << "\n";
+    // The same two ratios with the three piles timed in turn, so that all see the same load.
+    const std::vector<bench::PileSpeed> turn =
+        bench::measureInTurn({scenes[0], scenes[3], scenes[4]}, steps, repeats, threads, &std::cerr);
+    std::cout << "in turn: disc-pile " << std::setprecision(4) << turn[0].medianRate() / 1e6 << " M, disc-pile-rolling "
+              << turn[1].medianRate() / 1e6 << " M, clump-pile " << turn[2].medianRate() / 1e6
+              << " M: rolling cost " << turn[0].medianRate() / turn[1].medianRate() << ", clumps / discs "
+              << turn[2].medianRate() / turn[0].medianRate();
+    if (threads == 1) {
+      std::cout << " (by CPU time: " << turn[0].medianCpuRate() / turn[1].medianCpuRate() << ", "
+                << turn[2].medianCpuRate() / turn[0].medianCpuRate() << ")";
+    }
+    std::cout << "\n";
     // The box2d engine on the same settled piles, at its default timestep (10x the DEM's): per
     // step it is slower, per simulated second the timestep ratio counts too.
     for (size_t k : {size_t{0}, size_t{2}}) {
@@ -68,13 +80,13 @@ int benchCommand(const std::vector<std::string>& args) {
   // Each contact path on the same settled piles in one process, repeats in alternation: the
   // ratio is what the wide path is worth, whatever else the machine is doing.
   if (hasWidePath()) {
-    for (size_t k : {size_t{0}, size_t{2}}) {
+    for (size_t k : {size_t{0}, size_t{2}, size_t{3}, size_t{4}}) {
       if (!only.empty() && scenes[k].name != only) continue;
       const bench::PathSpeeds p = bench::measurePathSpeeds(scenes[k], steps, repeats, threads, &std::cerr);
       overrideSimdPath(SimdPath::Wide);
       const std::string target = simdTargetName();
       overrideSimdPath(std::nullopt);
-      std::cout << "paths " << std::setw(14) << scenes[k].name << "wide (" << target << ") "
+      std::cout << "paths " << std::setw(18) << scenes[k].name << "wide (" << target << ") "
                 << std::setprecision(4) << p.wide.medianRate() / 1e6 << " M, baseline "
                 << p.baseline.medianRate() / 1e6 << " M particle-steps/s: wide/baseline "
                 << p.wide.medianRate() / p.baseline.medianRate();

@@ -294,7 +294,7 @@ void ContactSolver::pairForces(const Law& law, double dt) {
 template <class Law>
 void ContactSolver::widePairForces(const Law& law, double dt) {
   if (discBatchStale_) {
-    discBatch_.build(neighbors_, particles_.size());
+    discBatch_.build(neighbors_, particles_.size(), material_.rollingFriction > 0 ? &rollingPairs_ : nullptr);
     discBatchStale_ = false;
   }
   DiscPairBatch& b = discBatch_;
@@ -303,12 +303,19 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   double* tau = particles_.torque.data();
   // One thread adds each share at once; several write records, summed per particle after.
   const bool serial = pool_ == nullptr;
-  const DiscPairKernelInput in{
+  DiscPairKernelInput in{
       particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
       particles_.boundingRadius.data(), b.i(), b.j(), b.dampN(), b.dampT(), b.history(), b.fn(), b.ft(),
       b.overlap(), material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
       std::is_same_v<decltype(law.tangential), CundallStrack>, serial ? f->data() : nullptr, serial ? tau : nullptr,
       b.ends(), b.iEnd(), b.jEnd()};
+  if (b.rolls()) {  // rolling resistance: the couple's lanes (the walls' couples are the scalar law's, below)
+    in.rollingHistory = b.rollingHistory();
+    in.rollingStiffness = b.rollingStiffness();
+    in.rollingCompliance = b.rollingCompliance();
+    in.rollingCapPerForce = b.rollingCapPerForce();
+    in.rollingDamping = b.rollingDamping();
+  }
   wideStateAhead_ = true;
   const int blocks = b.paddedSlots() / kDiscPairBlock;
   const int wallPairs = static_cast<int>(b.wallPairs().size());
@@ -432,10 +439,9 @@ void ContactSolver::carryPolygonCache() {
 
 void ContactSolver::computeForces(double dt, bool moved) {
   auto t0 = Clock::now();
-  // The wide kernel knows the linear spring-dashpot with Coulomb friction or none; a scene with
-  // rolling resistance keeps the baseline throughout, so its rolling history is never left
-  // behind by a stage the kernel ran.
-  const bool wide = particles_.polygons.empty() && material_.rollingFriction == 0 && simdPath() == SimdPath::Wide;
+  // The wide kernel knows the linear spring-dashpot with Coulomb friction or none, and rolling
+  // resistance (whose relative rotation it keeps, in a frictionless stage too).
+  const bool wide = particles_.polygons.empty() && simdPath() == SimdPath::Wide;
   // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it
   // over; after a baseline step the batch reloads it.
   if (!wide || moved) writeBackWideState();
@@ -458,7 +464,8 @@ void ContactSolver::computeForces(double dt, bool moved) {
   const LinearSpringDashpot normal{material_.normalStiffness};
   if (material_.rollingFriction > 0 && material_.friction > 0 && !polygons) {
     const RollingLaw law{normal, {material_.tangentialStiffness, material_.friction}, rollingModel(material_)};
-    pairForces<RollingLaw, true>(law, dt);
+    if (wide) widePairForces(law, dt);
+    else pairForces<RollingLaw, true>(law, dt);
   } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
     if (wide) widePairForces(law, dt);

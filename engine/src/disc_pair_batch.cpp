@@ -4,8 +4,13 @@
 
 namespace grainlab {
 
-void DiscPairBatch::build(const NeighborList& list, int particles) {
+void DiscPairBatch::build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling) {
   const std::vector<PairState>& pairs = list.pairs();
+  rolls_ = rolling != nullptr;
+  for (std::vector<double>* v : {&rollingHistory_, &rollingStiffness_, &rollingCompliance_, &rollingCapPerForce_,
+                                 &rollingDamping_}) {
+    v->clear();
+  }
   i_.clear();
   j_.clear();
   pair_.clear();
@@ -53,6 +58,14 @@ void DiscPairBatch::build(const NeighborList& list, int particles) {
     dampN_.push_back(p.dampN);
     dampT_.push_back(p.dampT);
     history_.push_back(p.history.tangential);
+    if (rolls_) {
+      const RollingResistance::Pair& r = (*rolling)[k];
+      rollingHistory_.push_back(p.history.rolling);
+      rollingStiffness_.push_back(r.stiffness);
+      rollingCompliance_.push_back(r.compliance);
+      rollingCapPerForce_.push_back(r.capPerForce);
+      rollingDamping_.push_back(r.damping);
+    }
   }
   slots_ = static_cast<int>(i_.size());
   // Padding to whole blocks: i = j = 0 is a pair at zero distance, which never touches; its
@@ -70,6 +83,12 @@ void DiscPairBatch::build(const NeighborList& list, int particles) {
   fn_.assign(padded, 0);
   ft_.assign(padded, 0);
   overlap_.assign(padded, 0);
+  if (rolls_) {
+    for (std::vector<double>* v : {&rollingHistory_, &rollingStiffness_, &rollingCompliance_, &rollingCapPerForce_,
+                                   &rollingDamping_}) {
+      v->resize(padded, 0);
+    }
+  }
   ends_.assign(4 * (static_cast<size_t>(next) + 1), -0.0);
 }
 
@@ -80,6 +99,7 @@ void DiscPairBatch::writeBack(std::vector<PairState>& pairs) const {
     p.fn = fn_[static_cast<size_t>(s)];
     p.ft = ft_[static_cast<size_t>(s)];
     p.overlap = overlap_[static_cast<size_t>(s)];
+    if (rolls_) p.history.rolling = rollingHistory_[static_cast<size_t>(s)];
   }
 }
 

@@ -8,20 +8,24 @@
 // Every particle has room for kEndsHeld records (−0 where it has fewer: adding −0 changes
 // nothing), so that sum is a loop of fixed length, which the processor does not mispredict;
 // the records past kEndsHeld, rare, follow per particle.
-// The disc-disc pairs' state (spring, fn, ft, overlap) lives in the slots from one step to
-// the next; writeBack() hands it to the neighbour list's pairs when they are read.
+// The disc-disc pairs' state (spring, fn, ft, overlap, and with rolling resistance the relative
+// rotation) lives in the slots from one step to the next; writeBack() hands it to the
+// neighbour list's pairs when they are read.
 #include <cstdint>
 #include <vector>
 
 #include "grainlab/math.hpp"
 #include "neighbor_list.hpp"
+#include "rolling_resistance.hpp"
 
 namespace grainlab {
 
 class DiscPairBatch {
  public:
-  /// Lays out the list's pairs as they are now (after a rebuild or a restore), with their state.
-  void build(const NeighborList& list, int particles);
+  /// Lays out the list's pairs as they are now (after a rebuild or a restore), with their state;
+  /// with `rolling` (each pair's rolling constants, in pair order), their rolling lanes too.
+  void build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling = nullptr);
+  bool rolls() const { return rolls_; }
   /// Writes the slots' state into the list's pairs (those build() was given).
   void writeBack(std::vector<PairState>& pairs) const;
   /// Where the kernel reads and writes; the particles' arrays and the law are the caller's.
@@ -35,6 +39,12 @@ class DiscPairBatch {
   double* fn() { return fn_.data(); }
   double* ft() { return ft_.data(); }
   double* overlap() { return overlap_.data(); }
+  /// Rolling resistance's slots (null without it): θ_r, and the constants k_r, 1/k_r, μ_r R*, c_r.
+  double* rollingHistory() { return rolls_ ? rollingHistory_.data() : nullptr; }
+  const double* rollingStiffness() const { return rollingStiffness_.data(); }
+  const double* rollingCompliance() const { return rollingCompliance_.data(); }
+  const double* rollingCapPerForce() const { return rollingCapPerForce_.data(); }
+  const double* rollingDamping() const { return rollingDamping_.data(); }
   /// Records (fx fy torque 0): slot s's i end at ends()[4 iEnd()[s]], its j end at ends()[4 jEnd()[s]].
   double* ends() { return ends_.data(); }
   const std::int32_t* iEnd() const { return iEnd_.data(); }
@@ -73,6 +83,8 @@ class DiscPairBatch {
   std::vector<std::int64_t> i_, j_;
   std::vector<int> pair_;  // the slot's pair in the list
   std::vector<double> dampN_, dampT_, history_, fn_, ft_, overlap_;
+  bool rolls_ = false;
+  std::vector<double> rollingHistory_, rollingStiffness_, rollingCompliance_, rollingCapPerForce_, rollingDamping_;
   std::vector<int> wallPairs_;
   std::vector<double> ends_;                  // fx fy torque 0: particle k's m-th at k × kEndsHeld + m, then the overflow
   std::vector<std::int32_t> iEnd_, jEnd_;     // per slot: its ends' places (padding: one past the last)

@@ -30,8 +30,15 @@ HWY_INLINE V reciprocalSqrt(D d, V x) {
   return y;
 }
 
-template <bool kFrictional>
+// What a step's slots carry beside the disc law: nothing, rolling resistance (its couple; or,
+// in a frictionless step, only its relative rotation, kept and cleared as the baseline does),
+// or clump members (levers from their bodies' centroids).
+enum class Extra { None, Rolling, RollingKept, Members };
+
+template <bool kFrictional, Extra kExtra>
 void forces(const DiscPairKernelInput& in, int begin, int end) {
+  constexpr bool kRolling = kExtra == Extra::Rolling, kMembers = kExtra == Extra::Members;
+  constexpr bool kRollingHistory = kRolling || kExtra == Extra::RollingKept;
   const hn::ScalableTag<double> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t lanes = hn::Lanes(d);
@@ -49,6 +56,9 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
   double* const ends = in.ends;
   const std::int32_t* const iEnd = in.iEnd;
   const std::int32_t* const jEnd = in.jEnd;
+  // Where force and torque go: the pair's particles, or its members' bodies.
+  const std::int64_t* const bodyI = kMembers ? in.bodyI : in.i;
+  const std::int64_t* const bodyJ = kMembers ? in.bodyJ : in.j;
   const double apart[4] = {-0.0, -0.0, -0.0, 0.0};
   for (int s = begin; s < end; s += static_cast<int>(lanes)) {
     const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
@@ -66,6 +76,7 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       hn::StoreU(zero, d, in.fn + s);
       hn::StoreU(zero, d, in.ft + s);
       hn::StoreU(zero, d, in.overlap + s);
+      if constexpr (kRollingHistory) hn::StoreU(zero, d, in.rollingHistory + s);
       if (!force) {
         for (size_t l = 0; l < lanes; ++l) {
           std::memcpy(ends + 4 * iEnd[s + l], apart, sizeof apart);
@@ -82,10 +93,20 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     const auto halfOverlap = hn::Mul(half, overlap);
     const auto armI = hn::Sub(ri, halfOverlap), armJ = hn::Sub(rj, halfOverlap);
     // contactForce(DiscContact): the relative motion at the contact.
-    const auto vxi = hn::GatherIndex(d, in.velocity, I2), vyi = hn::GatherIndex(d, in.velocity + 1, I2);
-    const auto vxj = hn::GatherIndex(d, in.velocity, J2), vyj = hn::GatherIndex(d, in.velocity + 1, J2);
-    const auto wi = hn::GatherIndex(d, in.spin, I), wj = hn::GatherIndex(d, in.spin, J);
-    const auto dvx = hn::Sub(vxj, vxi), dvy = hn::Sub(vyj, vyi);
+    const auto BI = kMembers ? hn::LoadU(di, bodyI + s) : I, BJ = kMembers ? hn::LoadU(di, bodyJ + s) : J;
+    const auto BI2 = kMembers ? hn::Add(BI, BI) : I2, BJ2 = kMembers ? hn::Add(BJ, BJ) : J2;
+    const auto vxi = hn::GatherIndex(d, in.velocity, BI2), vyi = hn::GatherIndex(d, in.velocity + 1, BI2);
+    const auto vxj = hn::GatherIndex(d, in.velocity, BJ2), vyj = hn::GatherIndex(d, in.velocity + 1, BJ2);
+    const auto wi = hn::GatherIndex(d, in.spin, BI), wj = hn::GatherIndex(d, in.spin, BJ);
+    auto dvx = hn::Sub(vxj, vxi), dvy = hn::Sub(vyj, vyi);
+    // A member's lever L from its body's centroid adds ω × L = (−ω L_y, ω L_x) to its velocity.
+    [[maybe_unused]] auto lxi = zero, lyi = zero, lxj = zero, lyj = zero;
+    if constexpr (kMembers) {
+      lxi = hn::GatherIndex(d, in.lever, I2), lyi = hn::GatherIndex(d, in.lever + 1, I2);
+      lxj = hn::GatherIndex(d, in.lever, J2), lyj = hn::GatherIndex(d, in.lever + 1, J2);
+      dvx = hn::Sub(hn::NegMulAdd(wj, lyj, dvx), hn::Mul(hn::Neg(wi), lyi));
+      dvy = hn::Sub(hn::MulAdd(wj, lxj, dvy), hn::Mul(wi, lxi));
+    }
     const auto spin = hn::MulAdd(wi, armI, hn::Mul(wj, armJ));
     // t = (−n_y, n_x)
     const auto vn = hn::MulAdd(dvx, nx, hn::Mul(dvy, ny));
@@ -107,9 +128,29 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     }
     const auto fx = hn::NegMulAdd(ft, ny, hn::Mul(fn, nx));
     const auto fy = hn::MulAdd(ft, nx, hn::Mul(fn, ny));
-    const auto ti = hn::Mul(armI, ft), tj = hn::Mul(hn::Neg(armJ), ft);
+    // The couple on j (its opposite on i) of RollingResistance::couple(): the spring on the
+    // relative rotation, held at μ_r R* f_n (then plastic, the damper off).
+    [[maybe_unused]] auto couple = zero;
+    [[maybe_unused]] auto hr = zero;
+    if constexpr (kRollingHistory) hr = hn::LoadU(d, in.rollingHistory + s);
+    if constexpr (kRolling) {
+      const auto rollingSpin = hn::Sub(wj, wi);
+      hr = hn::MulAdd(rollingSpin, dt, hr);
+      const auto spring = hn::Neg(hn::Mul(hn::LoadU(d, in.rollingStiffness + s), hr));
+      const auto cap = hn::Max(hn::Mul(hn::LoadU(d, in.rollingCapPerForce + s), fn), zero);
+      const auto held = hn::Min(hn::Max(spring, hn::Neg(cap)), cap);
+      const auto plastic = hn::Ge(hn::Abs(spring), cap);
+      hr = hn::IfThenElse(plastic, hn::Neg(hn::Mul(held, hn::LoadU(d, in.rollingCompliance + s))), hr);
+      couple = hn::IfThenElse(plastic, held, hn::NegMulAdd(hn::LoadU(d, in.rollingDamping + s), rollingSpin, spring));
+    }
+    auto ti = kRolling ? hn::MulAdd(armI, ft, couple) : hn::Mul(armI, ft);
+    auto tj = kRolling ? hn::NegMulAdd(armJ, ft, couple) : hn::Mul(hn::Neg(armJ), ft);
+    if constexpr (kMembers) {  // and the lever's: L × F = L_x F_y − L_y F_x
+      ti = hn::Add(ti, hn::MulSub(lxi, fy, hn::Mul(lyi, fx)));
+      tj = hn::Add(tj, hn::MulSub(lxj, fy, hn::Mul(lyj, fx)));
+    }
     // Each end's share: −F on i, F on j.
-    if (force) {  // one thread: each touching pair's shares at once, in slot (= pair) order
+    if (kMembers || force) {  // one thread: each touching pair's shares at once, in slot (= pair) order
       hn::Store(fx, d, out);
       hn::Store(fy, d, out + lanes);
       hn::Store(ti, d, out + 2 * lanes);
@@ -118,7 +159,7 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       hn::StoreMaskBits(d, touching, bits);
       for (size_t l = 0; l < lanes; ++l) {
         if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
-        const std::int64_t pi = in.i[s + l], pj = in.j[s + l];
+        const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];
         force[2 * pi] -= out[l];
         force[2 * pi + 1] -= out[lanes + l];
         torque[pi] -= out[2 * lanes + l];
@@ -149,12 +190,21 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     hn::StoreU(hn::IfThenElseZero(touching, fn), d, in.fn + s);
     hn::StoreU(hn::IfThenElseZero(touching, ft), d, in.ft + s);
     hn::StoreU(hn::IfThenElseZero(touching, overlap), d, in.overlap + s);
+    if constexpr (kRollingHistory) hn::StoreU(hn::IfThenElseZero(touching, hr), d, in.rollingHistory + s);
   }
 }
 
 void DiscPairForces(const DiscPairKernelInput& in, int begin, int end) {
-  if (in.frictional) forces<true>(in, begin, end);
-  else forces<false>(in, begin, end);
+  if (in.bodyI) {
+    if (in.frictional) forces<true, Extra::Members>(in, begin, end);
+    else forces<false, Extra::Members>(in, begin, end);
+  } else if (in.rollingHistory) {
+    if (in.frictional) forces<true, Extra::Rolling>(in, begin, end);
+    else forces<false, Extra::RollingKept>(in, begin, end);
+  } else {
+    if (in.frictional) forces<true, Extra::None>(in, begin, end);
+    else forces<false, Extra::None>(in, begin, end);
+  }
 }
 
 const char* KernelTarget() { return hwy::TargetName(HWY_TARGET); }

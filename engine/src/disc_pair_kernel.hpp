@@ -47,6 +47,22 @@ struct DiscPairKernelInput {
   double* ends;
   const std::int32_t* iEnd;
   const std::int32_t* jEnd;
+  // Rolling resistance (rolling_resistance.hpp), where the scene has it; null otherwise. Per
+  // slot: the relative rotation θ_r (read and written; zero where the pair is apart) and the
+  // pair's constants k_r, 1/k_r, μ_r R*, c_r. A frictionless step keeps θ_r as it is (the
+  // baseline's frictionless law has no couple) and clears it where the pair parts.
+  double* rollingHistory = nullptr;
+  const double* rollingStiffness = nullptr;
+  const double* rollingCompliance = nullptr;
+  const double* rollingCapPerForce = nullptr;
+  const double* rollingDamping = nullptr;
+  // Clumps' member discs (member_contacts.hpp), one thread only; null for a disc scene. Then
+  // position and radius are the members', i and j name members, and the slots' bodies (whose
+  // velocity and spin are read, and to which force and torque go) are bodyI and bodyJ; each
+  // member sits at lever (x0 y0 x1 y1 …, world frame) from its body's centroid.
+  const std::int64_t* bodyI = nullptr;
+  const std::int64_t* bodyJ = nullptr;
+  const double* lever = nullptr;
 };
 
 /// Evaluates slots [begin, end) (block multiples): the pairs' state and their end forces.

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "contact_law.hpp"
+#include "disc_pair_kernel.hpp"
 #include "grainlab/errors.hpp"
+#include "grainlab/simd_path.hpp"
 #include "grainlab/state_archive.hpp"
 #include "local_damping.hpp"
 #include "runaway_overlap.hpp"
@@ -51,11 +54,21 @@ void MemberContactSolver::initialize() {
   skin_ = owner_.empty() ? 0.0 : skinFraction_ * meanRadius / static_cast<double>(owner_.size());
   lever_.assign(owner_.size(), Vec2::Zero());
   position_.assign(owner_.size(), Vec2::Zero());
+  writeBackWideState();
   neighbors_.invalidate();
 }
 
 void MemberContactSolver::clearTangentialHistory() {
+  writeBackWideState();
   for (PairState& p : neighbors_.pairs()) p.history.tangential = 0;
+  batchStale_ = true;
+}
+
+void MemberContactSolver::writeBackWideState() const {
+  if (!wideStateAhead_) return;
+  // The pairs' state is part of this solver's value: the batch only held it for the wide path.
+  batch_.writeBack(const_cast<NeighborList&>(neighbors_).pairs());
+  wideStateAhead_ = false;
 }
 
 // Each member where its body now is. A lone disc's offset is zero, so its position is its
@@ -106,11 +119,41 @@ DiscContact MemberContactSolver::touch(const PairState& p) const {
 // plus the member's offset, so ω × r and r × F gain the offset's terms. With a zero offset
 // (a lone disc) those terms are zero and the result is the fast path's to the bit.
 template <class Law>
-void MemberContactSolver::pairForces(const Law& law, double dt) {
+inline void MemberContactSolver::pairForce(PairState& p, const DiscContact& c, const Law& law, double dt) {
   Vec2* f = particles_.force.data();
   double* tau = particles_.torque.data();
   const Vec2* v = particles_.velocity.data();
   const double* w = particles_.spin.data();
+  const int a = owner_[static_cast<size_t>(p.i)];
+  const Vec2& leverA = lever_[static_cast<size_t>(p.i)];
+  const Vec2& n = c.normal;
+  const Vec2 t = perp(n);
+  Vec2 dv = -v[a];
+  dv -= cross(w[a], leverA);
+  double spin = w[a] * c.armI;
+  int b = -1;
+  Vec2 leverB = Vec2::Zero();
+  if (p.j >= 0) {
+    b = owner_[static_cast<size_t>(p.j)];
+    leverB = lever_[static_cast<size_t>(p.j)];
+    dv += v[b];
+    dv += cross(w[b], leverB);
+    spin += w[b] * c.armJ;
+  }
+  const ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
+  p.fn = law.normal.force(m, p.dampN);
+  p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history.tangential);
+  p.overlap = m.overlap;
+  const Vec2 F = p.fn * n + p.ft * t;
+  f[a] -= F;
+  tau[a] -= c.armI * p.ft + cross(leverA, F);
+  if (b < 0) return;
+  f[b] += F;
+  tau[b] += -c.armJ * p.ft + cross(leverB, F);
+}
+
+template <class Law>
+void MemberContactSolver::pairForces(const Law& law, double dt) {
   for (PairState& p : neighbors_.pairs()) {
     const DiscContact c = touch(p);
     if (c.overlap <= 0) {
@@ -118,32 +161,42 @@ void MemberContactSolver::pairForces(const Law& law, double dt) {
       p.fn = p.ft = p.overlap = 0;
       continue;
     }
-    const int a = owner_[static_cast<size_t>(p.i)];
-    const Vec2& leverA = lever_[static_cast<size_t>(p.i)];
-    const Vec2& n = c.normal;
-    const Vec2 t = perp(n);
-    Vec2 dv = -v[a];
-    dv -= cross(w[a], leverA);
-    double spin = w[a] * c.armI;
-    int b = -1;
-    Vec2 leverB = Vec2::Zero();
-    if (p.j >= 0) {
-      b = owner_[static_cast<size_t>(p.j)];
-      leverB = lever_[static_cast<size_t>(p.j)];
-      dv += v[b];
-      dv += cross(w[b], leverB);
-      spin += w[b] * c.armJ;
+    pairForce(p, c, law, dt);
+  }
+  if (material_.localDamping > 0) {
+    for (int k = 0; k < particles_.size(); ++k) applyLocalDamping(particles_, k, material_.localDamping);
+  }
+}
+
+// The member-member pairs through the disc kernel with its member lanes, in slot (= pair)
+// order, then the member-wall pairs in order, scalar.
+template <class Law>
+void MemberContactSolver::widePairForces(const Law& law, double dt) {
+  if (batchStale_) {
+    batch_.build(neighbors_.pairs(), owner_);
+    batchStale_ = false;
+  }
+  MemberPairBatch& b = batch_;
+  DiscPairKernelInput in{
+      position_.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(), radius_.data(), b.i(),
+      b.j(), b.dampN(), b.dampT(), b.history(), b.fn(), b.ft(), b.overlap(), material_.normalStiffness,
+      material_.tangentialStiffness, material_.friction, dt, std::is_same_v<decltype(law.tangential), CundallStrack>,
+      particles_.force.data()->data(), particles_.torque.data(), nullptr, nullptr, nullptr};
+  in.bodyI = b.bodyI();
+  in.bodyJ = b.bodyJ();
+  in.lever = lever_.data()->data();
+  wideStateAhead_ = true;
+  discPairForces(in, 0, b.paddedSlots());
+  std::vector<PairState>& pairs = neighbors_.pairs();
+  for (const int k : b.wallPairs()) {
+    PairState& p = pairs[static_cast<size_t>(k)];
+    const DiscContact c = touch(p);
+    if (c.overlap <= 0) {
+      p.history = {};
+      p.fn = p.ft = p.overlap = 0;
+      continue;
     }
-    const ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
-    p.fn = law.normal.force(m, p.dampN);
-    p.ft = law.tangential.force(p.fn, m, p.dampT, dt, p.history.tangential);
-    p.overlap = m.overlap;
-    const Vec2 F = p.fn * n + p.ft * t;
-    f[a] -= F;
-    tau[a] -= c.armI * p.ft + cross(leverA, F);
-    if (b < 0) continue;
-    f[b] += F;
-    tau[b] += -c.armJ * p.ft + cross(leverB, F);
+    pairForce(p, c, law, dt);
   }
   if (material_.localDamping > 0) {
     for (int k = 0; k < particles_.size(); ++k) applyLocalDamping(particles_, k, material_.localDamping);
@@ -153,7 +206,11 @@ void MemberContactSolver::pairForces(const Law& law, double dt) {
 void MemberContactSolver::computeForces(double dt) {
   auto t0 = Clock::now();
   placeMembers();
+  const bool wide = simdPath() == SimdPath::Wide;
   const bool moved = neighbors_.outdated(position_, 0, memberCount());
+  // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it over.
+  if (!wide || moved) writeBackWideState();
+  if (!wide) batchStale_ = true;
   if (neighbors_.update(position_, radius_, motion_, particles_.walls, skin_, moved)) {
     // A clump's own members never touch: their pairs are dropped as the list is built.
     std::vector<PairState>& pairs = neighbors_.pairs();
@@ -162,14 +219,16 @@ void MemberContactSolver::computeForces(double dt) {
     });
     assignDamping();
     ++profile_.rebuilds;
+    batchStale_ = true;
   }
   auto t1 = Clock::now();
   const LinearSpringDashpot normal{material_.normalStiffness};
   if (material_.friction == 0) {
-    pairForces(ContactLaw<LinearSpringDashpot, Frictionless>{normal, {}}, dt);
+    const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
+    wide ? widePairForces(law, dt) : pairForces(law, dt);
   } else {
-    pairForces(ContactLaw<LinearSpringDashpot, CundallStrack>{normal, {material_.tangentialStiffness, material_.friction}},
-               dt);
+    const ContactLaw<LinearSpringDashpot, CundallStrack> law{normal, {material_.tangentialStiffness, material_.friction}};
+    wide ? widePairForces(law, dt) : pairForces(law, dt);
   }
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
@@ -177,6 +236,7 @@ void MemberContactSolver::computeForces(double dt) {
 }
 
 void MemberContactSolver::contacts(std::vector<ContactRecord>& out) const {
+  writeBackWideState();
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
     const DiscContact c = touch(p);
@@ -193,6 +253,7 @@ void MemberContactSolver::contacts(std::vector<ContactRecord>& out) const {
 }
 
 void MemberContactSolver::countContacts(std::vector<int>& count) const {
+  writeBackWideState();
   count.assign(static_cast<size_t>(particles_.size()), 0);
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
@@ -202,6 +263,7 @@ void MemberContactSolver::countContacts(std::vector<int>& count) const {
 }
 
 double MemberContactSolver::elasticEnergy() const {
+  writeBackWideState();
   double e = 0;
   const LinearSpringDashpot normal{material_.normalStiffness};
   const CundallStrack tangential{material_.tangentialStiffness, material_.friction};
@@ -213,6 +275,7 @@ double MemberContactSolver::elasticEnergy() const {
 }
 
 void MemberContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalDt) const {
+  writeBackWideState();
   for (const PairState& p : neighbors_.pairs()) {
     if (p.overlap <= 0) continue;
     const double size = p.j >= 0 ? std::min(radius_[static_cast<size_t>(p.i)], radius_[static_cast<size_t>(p.j)])
@@ -225,12 +288,14 @@ void MemberContactSolver::checkOverlaps(std::int64_t step, double dt, double cri
 
 void MemberContactSolver::persist(StateArchive& a) {
   a.section("member contacts");
+  writeBackWideState();
   neighbors_.persist(a, memberCount(), static_cast<int>(particles_.walls.size()));
   if (a.loading()) {
     for (const PairState& p : neighbors_.pairs()) {
       a.require(p.j < 0 || owner_[static_cast<size_t>(p.i)] != owner_[static_cast<size_t>(p.j)],
                 "a member pair inside one clump is in the neighbour list");
     }
+    batchStale_ = true;
   }
 }
 

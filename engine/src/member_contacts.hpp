@@ -6,6 +6,9 @@
 // the torque with the lever from the body's centroid (a member's normal force does not pass
 // through the body's centre, so the disc fast path's torque-free normal force does not apply).
 // One thread: the sums are in pair order, so the result is the same whatever the thread count.
+// On the wide path (grainlab/simd_path.hpp) the member-member pairs go through the disc kernel
+// in batches (member_pair_batch.hpp), then the member-wall pairs: each body's sums are again
+// in one fixed order.
 #include <cstdint>
 #include <vector>
 
@@ -14,6 +17,7 @@
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
 #include "grainlab/profile.hpp"
+#include "member_pair_batch.hpp"
 #include "neighbor_list.hpp"
 
 namespace grainlab {
@@ -48,7 +52,12 @@ class MemberContactSolver {
   void assignDamping();
   template <class Law>
   void pairForces(const Law& law, double dt);
+  template <class Law>
+  void widePairForces(const Law& law, double dt);
+  template <class Law>
+  void pairForce(PairState& p, const DiscContact& c, const Law& law, double dt);
   DiscContact touch(const PairState& p) const;
+  void writeBackWideState() const;
 
   ParticleStore& particles_;
   const Material& material_;
@@ -64,6 +73,11 @@ class MemberContactSolver {
   std::vector<Vec2> lever_;       // world frame, from the body's centroid: offset_ turned
   std::vector<Vec2> position_;    // world frame: the body's position + lever_
   NeighborList neighbors_;
+  // The wide path's layout of the member pairs, rebuilt when the list is. After a wide step
+  // the pairs' state is in the batch (ahead of the list) until writeBackWideState().
+  MemberPairBatch batch_;
+  bool batchStale_ = true;
+  mutable bool wideStateAhead_ = false;
 };
 
 }  // namespace grainlab

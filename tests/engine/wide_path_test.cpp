@@ -65,6 +65,25 @@ Scene pressedPile() {
   return scene;
 }
 
+// The same with rolling resistance: circular-rolling's μ_r and damping ratio.
+Scene rollingPile() {
+  Scene scene = pressedPile();
+  scene.material.rollingFriction = 0.1;
+  scene.material.rollingDamping = 0.3;
+  return scene;
+}
+
+// A shuffled pile of three-disc clumps (the bench's clump pile) falling under 50 g onto the
+// floor: in contact, sliding and rebuilding its member pairs through the run.
+Scene clumpPile() {
+  Scene scene = clumpPileScene(12, 12);
+  std::mt19937_64 rng(7);
+  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+  scene.gravity *= 50;
+  scene.stages[0].duration = 0.02;  // s
+  return scene;
+}
+
 Recorder runOn(SimdPath path, const Scene& scene) {
   overrideSimdPath(path);
   Recorder r;
@@ -85,9 +104,10 @@ class WidePath : public ::testing::Test {
 };
 
 TEST_F(WidePath, GivesTheSameBitsWithAnyThreadCount) {
-  for (const bool frictionless : {false, true}) {
-    Scene scene = pressedPile();
-    if (frictionless) scene.material.friction = 0;
+  enum class Law { Friction, Frictionless, Rolling, Clumps };
+  for (const Law law : {Law::Friction, Law::Frictionless, Law::Rolling, Law::Clumps}) {
+    Scene scene = law == Law::Rolling ? rollingPile() : law == Law::Clumps ? clumpPile() : pressedPile();
+    if (law == Law::Frictionless) scene.material.friction = 0;
     else scene.material.localDamping = 0.3;
     const Recorder serial = runOn(SimdPath::Wide, scene);
     ASSERT_GT(serial.contacts, 100u);  // the pile is in contact at the end
@@ -160,48 +180,118 @@ TEST_F(WidePath, ABigDiscsManyContactsGiveTheSameBitsWithAnyThreadCount) {
   EXPECT_EQ(serial, run(3, &unused)) << "3 threads";
 }
 
-// Two worlds step the pressed pile in lockstep on the baseline (the same bits), then take one
-// step each, one on the wide path. Their forces may differ by rounding only: the overlap is
-// r_i + r_j − |d|, so a few units in the last place of |d| (ε · 2r) move a normal force by
-// k_n · ε · 2r, and the spring and dashpot terms by less; a particle sums at most a few
-// neighbours' worth. 64 k_n ε 2r (×r for a torque) bounds that; a term missing or of the
-// wrong sign (a damping, a torque arm) would differ by far more (k_n times an overlap,
-// about 1e-3 r, against 1e-14 r).
-TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
-  for (int threads : {1, 2}) {
-    Scene scene = pressedPile();
-    WorldSettings settings;
-    settings.threads = threads;
-    auto make = [&] {
-      auto w = std::make_unique<World>(scene.material, settings);
-      for (const ParticleSpec& p : scene.particles) w->addParticle(p);
-      for (const Wall& wall : scene.walls) w->addWall(wall);
-      w->setGravity(scene.gravity);
-      return w;
-    };
-    const std::unique_ptr<World> baseline = make(), wide = make();
-    overrideSimdPath(SimdPath::Baseline);
-    for (int k = 0; k < 2000; ++k) {  // into contact, with sliding
-      baseline->step();
-      wide->step();
-    }
+// Two worlds step `scene` in lockstep on the baseline (the same bits), then take one step
+// each, one on the wide path; returns the largest gaps between their particles' forces and
+// torques, the largest force and torque on the baseline, and the gap between the energies
+// stored in their contacts' springs (the pairs' state the step left: what the next step starts
+// from), with the baseline's touching contacts and their largest force.
+struct ForceGaps {
+  double force = 0, torque = 0, largestForce = 0, largestTorque = 0;
+  double energy = 0, largestContactForce = 0;
+  size_t contacts = 0;
+};
+ForceGaps oneWideStep(const Scene& scene, int threads, int steps) {
+  WorldSettings settings;
+  settings.threads = threads;
+  auto make = [&] {
+    auto w = std::make_unique<World>(scene.material, settings);
+    for (const ParticleSpec& p : scene.particles) w->addParticle(p);
+    for (const Wall& wall : scene.walls) w->addWall(wall);
+    w->setGravity(scene.gravity);
+    return w;
+  };
+  const std::unique_ptr<World> baseline = make(), wide = make();
+  overrideSimdPath(SimdPath::Baseline);
+  for (int k = 0; k < steps; ++k) {  // into contact, with sliding
     baseline->step();
-    overrideSimdPath(SimdPath::Wide);
     wide->step();
-    overrideSimdPath(std::nullopt);
-    double largestRadius = 0;
-    for (const ParticleSpec& p : scene.particles) largestRadius = std::max(largestRadius, p.radius);
-    const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * largestRadius;
-    double forceGap = 0, torqueGap = 0, largestForce = 0;
-    for (int p = 0; p < baseline->size(); ++p) {
-      forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
-      torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
-      largestForce = std::max(largestForce, baseline->forces()[p].norm());
+  }
+  baseline->step();
+  overrideSimdPath(SimdPath::Wide);
+  wide->step();
+  overrideSimdPath(std::nullopt);
+  ForceGaps g;
+  for (int p = 0; p < baseline->size(); ++p) {
+    g.force = std::max(g.force, (wide->forces()[p] - baseline->forces()[p]).norm());
+    g.torque = std::max(g.torque, std::abs(wide->torques()[p] - baseline->torques()[p]));
+    g.largestForce = std::max(g.largestForce, baseline->forces()[p].norm());
+    g.largestTorque = std::max(g.largestTorque, std::abs(baseline->torques()[p]));
+  }
+  g.energy = std::abs(wide->elasticEnergy() - baseline->elasticEnergy());
+  std::vector<ContactRecord> contacts;
+  baseline->contacts(contacts);
+  g.contacts = contacts.size();
+  for (const ContactRecord& c : contacts) g.largestContactForce = std::max(g.largestContactForce, std::hypot(c.fn, c.ft));
+  return g;
+}
+
+// A bound on the stored energies' gap: a spring holding force f (stiffness k) stores f²/2k,
+// which a rounding-level gap Δf in that force moves by f Δf / k. Normal and tangential forces
+// move by at most the force bound, a rolling couple (k_r = β k_t R*²) by μ_r R* times it; the
+// couple is at most μ_r R* f. Summed over the contacts, with f the largest contact force.
+double energyBound(const ForceGaps& g, const Material& m, double forceBound) {
+  const double rolling = m.rollingFriction * m.rollingFriction / m.rollingStiffnessRatio;
+  return static_cast<double>(g.contacts) * g.largestContactForce * forceBound *
+         (1 / m.normalStiffness + (1 + rolling) / m.tangentialStiffness);
+}
+
+// The pressed pile, one step on each path after 2000 on the baseline. Their forces may differ
+// by rounding only: the overlap is r_i + r_j − |d|, so a few units in the last place of |d|
+// (ε · 2r) move a normal force by k_n · ε · 2r, and the spring and dashpot terms by less; a
+// particle sums at most a few neighbours' worth. 64 k_n ε 2r (×r for a torque) bounds that; a
+// term missing or of the wrong sign (a damping, a torque arm) would differ by far more (k_n
+// times an overlap, about 1e-3 r, against 1e-14 r).
+// With rolling resistance each contact's couple adds to the torques: its cap μ_r R* f_n moves
+// with f_n (R* ≤ r/2, so by at most μ_r r/2 times f_n's gap), its spring and damper by a few
+// units in their last place (far below: the couple is at most μ_r R* f_n, f_n ≪ k_n 2r), so
+// the torque bound grows by (1 + μ_r); a couple missing or of the wrong sign is of order
+// μ_r R* f_n, about 1e-4 r · k_n r against 1e-14 r · k_n r. The springs' stored energy checks
+// the state the step leaves (a relative rotation not reset to the cap overshoots it by ω_r dt,
+// storing about μ_r R* f_n ω_r dt more, far above the bound).
+TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
+  for (const bool rolling : {false, true}) {
+    for (int threads : {1, 2}) {
+      const Scene scene = rolling ? rollingPile() : pressedPile();
+      const ForceGaps g = oneWideStep(scene, threads, 2000);
+      double largestRadius = 0;
+      for (const ParticleSpec& p : scene.particles) largestRadius = std::max(largestRadius, p.radius);
+      const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * largestRadius;
+      const double torqueBound = (1 + scene.material.rollingFriction) * forceBound * largestRadius;
+      EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
+      EXPECT_GT(g.largestForce, 1e6 * forceBound) << "the pile is pressed: its forces are far above the bound";
+      EXPECT_GT(g.largestTorque, 1e3 * torqueBound) << "the pile's contacts turn its discs";
+      EXPECT_LE(g.force, forceBound) << threads << " threads" << (rolling ? ", rolling" : "");
+      EXPECT_LE(g.torque, torqueBound) << threads << " threads" << (rolling ? ", rolling" : "");
+      EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads" << (rolling ? ", rolling" : "");
     }
-    EXPECT_GT(forceGap, 0) << "the wide path was not taken: its rounding differs from the baseline's";
-    EXPECT_GT(largestForce, 1e6 * forceBound) << "the pile is pressed: its forces are far above the bound";
-    EXPECT_LE(forceGap, forceBound) << threads << " threads";
-    EXPECT_LE(torqueGap, forceBound * largestRadius) << threads << " threads";
+  }
+}
+
+// The clump pile, one step on each path after 1000 on the baseline: member pairs through the
+// kernel with their levers. A member's force moves by rounding as a disc's does, with the
+// member's radius r_m for r; a clump sums its members' contacts, at most a few neighbours each
+// (64 bounds them, as above), and each torque's lever from the centroid is at most the clump's
+// reach ρ (its bounding radius), so the torques differ by at most the force bound × ρ. A lever
+// term missing or of the wrong sign would move a torque by ρ f, about 1e-3 r_m · k_n ρ against
+// 1e-14.
+TEST_F(WidePath, ClumpMemberPairsGiveTheBaselinesForcesToRounding) {
+  for (int threads : {1, 2}) {
+    const Scene scene = clumpPile();
+    const ForceGaps g = oneWideStep(scene, threads, 4000);
+    double memberRadius = 0, reach = 0;
+    for (const ParticleSpec& p : scene.particles) {
+      for (const ClumpMember& m : p.members) {
+        memberRadius = std::max(memberRadius, m.radius);
+        reach = std::max(reach, m.centre.norm() + m.radius);
+      }
+    }
+    const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * memberRadius;
+    EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
+    EXPECT_GT(g.largestForce, 1e6 * forceBound) << "the pile is in contact: its forces are far above the bound";
+    EXPECT_GT(g.largestTorque, 1e6 * forceBound * reach) << "the members' contacts turn their clumps";
+    EXPECT_LE(g.force, forceBound) << threads << " threads";
+    EXPECT_LE(g.torque, forceBound * reach) << threads << " threads";
+    EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads";
   }
 }
 

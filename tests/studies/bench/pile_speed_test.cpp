@@ -32,6 +32,22 @@ TEST(PileSpeed, TimesBothContactPathsInTurnAndLeavesThePathAsItWas) {
   EXPECT_EQ(s.wide.coordination, s.baseline.coordination);  // one settled pile for both
 }
 
+TEST(PileSpeed, TimesSeveralPilesInTurnEachAsItIs) {
+  Scene clumps = clumpPileScene(6, 6);
+  const std::vector<PileSpeed> s = measureInTurn({pileScene(6, 6, false), clumps}, 20, 3, 1, nullptr);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].name, "disc-pile");
+  EXPECT_EQ(s[1].name, "clump-pile");
+  for (const PileSpeed& p : s) {
+    EXPECT_EQ(p.particles, 36);
+    ASSERT_EQ(p.rates.size(), 3u);
+    EXPECT_EQ(p.cpuRates.size(), 3u);  // one thread: timed by its CPU time too
+    for (double r : p.rates) EXPECT_GT(r, 0);
+  }
+  // Each pile settled on its own: a clump's three discs touch more neighbours than a disc.
+  EXPECT_GT(s[1].coordination, s[0].coordination);
+}
+
 TEST(PileSpeed, MedianOfOddAndEvenRepeats) {
   PileSpeed s;
   s.rates = {3, 1, 2};

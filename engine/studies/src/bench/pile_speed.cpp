@@ -102,4 +102,20 @@ PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int thr
   return r;
 }
 
+std::vector<PileSpeed> measureInTurn(const std::vector<Scene>& scenes, int steps, int repeats, int threads,
+                                     std::ostream* progress) {
+  std::vector<std::unique_ptr<World>> worlds;
+  std::vector<PileSpeed> r;
+  for (const Scene& scene : scenes) {
+    worlds.push_back(settledWorld(scene, threads, WorldSettings::Engine::Dem));
+    r.push_back(describe(scene, *worlds.back()));
+  }
+  if (progress) *progress << "bench: " << scenes.size() << " piles settled, timing them in turn\n";
+  for (int rep = 0; rep < repeats; ++rep) {
+    for (size_t k = 0; k < worlds.size(); ++k) timeRepeat(*worlds[k], steps, threads, r[k]);
+  }
+  for (const auto& world : worlds) world->checkHealth();
+  return r;
+}
+
 }  // namespace grainlab::bench

@@ -48,4 +48,10 @@ struct PathSpeeds {
 };
 PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int threads, std::ostream* progress);
 
+/// Several piles, each settled, then timed in turn (the first, the second, …, the first
+/// again: all see the same load on the machine), `repeats` × `steps` steps each, on the
+/// default contact path. Their ratios are what one model costs against another.
+std::vector<PileSpeed> measureInTurn(const std::vector<Scene>& scenes, int steps, int repeats, int threads,
+                                     std::ostream* progress);
+
 }  // namespace grainlab::bench
