@@ -114,5 +114,58 @@ TEST(PeriodicKinematics, SameBitsOnOneAndThreeThreads) {
   EXPECT_EQ(std::memcmp(one.data(), three.data(), one.size() * sizeof(Vec2)), 0);
 }
 
+// Sheared far (γ = 3: the cell is remapped three times), a dense packing keeps every contact
+// in the neighbour list: at regular steps the touching pairs the world reports are exactly
+// those a brute-force search over all pairs and their nearest images finds.
+TEST(PeriodicKinematics, AFarShearedPackingMissesNoContactThroughRemaps) {
+  World world(test::material(1e6, 0.5, 0.5));
+  const int n = 12;
+  const double r = 0.002, spacing = 2 * r * 0.97;
+  world.setPeriodicCell(matrix(n * spacing, 0, 0, n * spacing));
+  std::uint64_t state = 23;
+  auto uniform = [&] {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.5;
+  };
+  std::vector<double> radius;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      radius.push_back(r * (1 + 0.02 * uniform()));
+      world.addParticle(disc(radius.back(), {i * spacing, j * spacing}));
+    }
+  }
+  const double rate = 20;  // 1/s
+  world.setCellVelocityGradient(matrix(0, rate, 0, 0));
+  world.initialize();
+  const int steps = static_cast<int>(3.0 / rate / world.timestep());
+  int remaps = 0, checks = 0;
+  double tilt = 0;
+  std::vector<ContactRecord> contacts;
+  for (int s = 1; s <= steps; ++s) {
+    world.step();
+    const PeriodicCell& cell = *world.periodicCell();
+    const double now = cell.edges()(0, 1) / cell.edges()(0, 0);
+    remaps += now < tilt - 0.5;  // the tilt jumps back by a whole edge at a remap
+    tilt = now;
+    if (s % 100 != 0) continue;
+    world.contacts(contacts);
+    std::vector<std::pair<int, int>> reported, found;
+    for (const ContactRecord& c : contacts) reported.emplace_back(c.i, c.j);
+    const auto x = world.positions();
+    for (int i = 0; i < world.size(); ++i) {
+      for (int j = i + 1; j < world.size(); ++j) {
+        if (cell.minimumImage(x[j] - x[i]).norm() < radius[i] + radius[j]) found.emplace_back(i, j);
+      }
+    }
+    ASSERT_GT(found.size(), 50u) << "too few contacts to test anything";
+    EXPECT_EQ(reported, found) << "step " << s;
+    ++checks;
+  }
+  EXPECT_GE(remaps, 3);
+  EXPECT_GT(checks, 20);
+}
+
 }  // namespace
 }  // namespace grainlab
