@@ -79,14 +79,14 @@ TEST(PeriodicKinematics, AnAffinelyDeformedGasStaysOnXEqualsFXWithZeroFluctuatio
   EXPECT_EQ(world.kineticEnergy(), 0.0);
 }
 
-// A jammed packing in a cell under shear: the same bits on 1 and 3 threads (the slots that
-// keep the parallel sums in order work on image pairs as on any other).
-std::vector<Vec2> shearedPacking(int threads) {
+// A jammed packing (discs, or boxes) in a cell under shear: the same bits on 1, 2 and 3 threads
+// (the slots that keep the parallel sums in order work on image pairs as on any other).
+std::vector<Vec2> shearedPacking(int threads, bool polygons = false) {
   WorldSettings settings;
   settings.threads = threads;
   World world(test::material(1e6, 0.5, 0.5), settings);
   const int n = 12;
-  const double r = 0.002, spacing = 2 * r * 0.98;
+  const double r = 0.002, spacing = 2 * r * 0.92;  // denser than hexagonal: jammed
   world.setPeriodicCell(matrix(n * spacing, 0, 0, n * spacing));
   std::uint64_t state = 11;
   auto uniform = [&] {
@@ -97,21 +97,38 @@ std::vector<Vec2> shearedPacking(int threads) {
   };
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      world.addParticle(disc(r * (1 + 0.04 * uniform()), {i * spacing, j * spacing}, {0.05 * uniform(), 0.05 * uniform()}));
+      const double size = r * (1 + 0.04 * uniform());
+      const Vec2 x(i * spacing, j * spacing), v(0.05 * uniform(), 0.05 * uniform());
+      if (!polygons) {
+        world.addParticle(disc(size, x, v));
+      } else {
+        ParticleSpec box = test::box(1.95 * size, 1.85 * size, x, 0.1 * uniform());
+        box.velocity = v;
+        world.addParticle(box);
+      }
     }
   }
   world.setCellVelocityGradient(matrix(0, 2.0, 0, 0));
   world.initialize();
   for (int s = 0; s < 3000; ++s) world.step();
+  std::vector<ContactRecord> contacts;
+  world.contacts(contacts);
+  EXPECT_GT(contacts.size(), 100u) << "a packing, not a gas";
   std::vector<Vec2> out(world.positions().begin(), world.positions().end());
   out.insert(out.end(), world.velocities().begin(), world.velocities().end());
   return out;
 }
 
-TEST(PeriodicKinematics, SameBitsOnOneAndThreeThreads) {
-  const std::vector<Vec2> one = shearedPacking(1), three = shearedPacking(3);
-  ASSERT_EQ(one.size(), three.size());
-  EXPECT_EQ(std::memcmp(one.data(), three.data(), one.size() * sizeof(Vec2)), 0);
+TEST(PeriodicKinematics, SameBitsOnOneTwoAndThreeThreads) {
+  for (const bool polygons : {false, true}) {
+    SCOPED_TRACE(polygons ? "polygons" : "discs");
+    const std::vector<Vec2> one = shearedPacking(1, polygons);
+    for (int threads : {2, 3}) {
+      const std::vector<Vec2> other = shearedPacking(threads, polygons);
+      ASSERT_EQ(one.size(), other.size());
+      EXPECT_EQ(std::memcmp(one.data(), other.data(), one.size() * sizeof(Vec2)), 0) << threads << " threads";
+    }
+  }
 }
 
 // Sheared far (γ = 3: the cell is remapped three times), a dense packing keeps every contact
