@@ -57,6 +57,9 @@ ContactSolver::ContactSolver(ParticleStore& particles, const Material& material,
 ContactSolver::~ContactSolver() = default;
 
 void ContactSolver::initialize() {
+  if (particles_.cell && !particles_.walls.empty()) {
+    throw std::invalid_argument("a periodic cell has no walls: its particles meet each other's images instead");
+  }
   // Polygon features are decided with Box2D's tolerances at the scale at which Box2D would
   // see the particles: about one unit (its tuning range).
   const std::vector<Polygon>& polygons = particles_.polygons;
@@ -92,7 +95,7 @@ void ContactSolver::writeBackWideState() const {
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
 // polygon goes through its kept features (PolygonCollider), which `cache` keeps.
-ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* cache) const {
+ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* cache, const Vec2* shift) const {
   const int i = p.i, j = p.j;
   const auto& x = particles_.position;
   const auto& radius = particles_.boundingRadius;
@@ -105,16 +108,17 @@ ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* c
                                        : collidePolygonWall(particles_.polygonOf(i), x[i], cosA[i], sinA[i], wall);
   }
   const bool iDisc = shape[i] == ShapeKind::Disc, jDisc = shape[j] == ShapeKind::Disc;
-  if (iDisc && jDisc) return collideDiscs(x[i], radius[i], x[j], radius[j]);
+  const Vec2 xj = shift ? Vec2(x[j] + *shift) : x[j];  // j, or its image in a periodic cell
+  if (iDisc && jDisc) return collideDiscs(x[i], radius[i], xj, radius[j]);
   const double reach = radius[i] + radius[j];
-  if ((x[j] - x[i]).squaredNorm() >= reach * reach) {
+  if ((xj - x[i]).squaredNorm() >= reach * reach) {
     if (cache) cache->kind = CachedContact::Kind::None;  // bounding circles apart
     return {};
   }
-  const Pose pi{x[i], cosA[i], sinA[i]}, pj{x[j], cosA[j], sinA[j]};
+  const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
   const int si = particles_.shapeIndex[i], sj = particles_.shapeIndex[j];
   if (!iDisc && !jDisc) return polygonCollider_->collidePolygons(si, pi, sj, pj, cache);
-  if (!iDisc) return polygonCollider_->collidePolygonDisc(si, pi, x[j], radius[j], cache);
+  if (!iDisc) return polygonCollider_->collidePolygonDisc(si, pi, xj, radius[j], cache);
   ContactGeometry g = polygonCollider_->collidePolygonDisc(sj, pj, x[i], radius[i], cache);
   g.normal = -g.normal;
   return g;
@@ -122,7 +126,7 @@ ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* c
 
 // The force of a touching pair with geometry g: F on j from i (−F on i), and the torques it
 // exerts about each centroid. Updates the pair's history and last forces.
-template <class Law>
+template <bool kPeriodic, class Law>
 inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, const Law& law, double dt, Vec2& F,
                                         double& ti, double& tj) const {
   const int i = p.i, j = p.j;
@@ -135,8 +139,15 @@ inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, 
   Vec2 dv = -(v[i] + cross(w[i], ri));
   Vec2 rj = Vec2::Zero();
   if (j >= 0) {
-    rj = g.point - x[j];
-    dv += v[j] + cross(w[j], rj);
+    if constexpr (kPeriodic) {
+      // j's image: its lever from the image's centre, its velocity with the image's affine part.
+      const size_t k = static_cast<size_t>(&p - neighbors_.pairs().data());
+      rj = g.point - (x[j] + imageShift(k));
+      dv += v[j] + cross(w[j], rj) + affineRelativeVelocity(p, k);
+    } else {
+      rj = g.point - x[j];
+      dv += v[j] + cross(w[j], rj);
+    }
   }
   F = lawForce(p, ContactMotion{g.overlap, dv.dot(n), dv.dot(t)}, n, t, law, dt);
   ti = cross(ri, F);
@@ -148,7 +159,7 @@ inline void ContactSolver::contactForce(PairState& p, const ContactGeometry& g, 
 // nothing to the normal one, and r × F is armI·f_t and −armJ·f_t. The exact values of the
 // terms the general form rounds (a normal force's torque about a disc's centre is zero), in
 // about half its operations.
-template <class Law>
+template <bool kPeriodic, class Law>
 inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, const Law& law, double dt, Vec2& F,
                                         double& ti, double& tj) const {
   const int i = p.i, j = p.j;
@@ -161,6 +172,7 @@ inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, cons
   if (j >= 0) {
     dv += v[j];
     spin += w[j] * c.armJ;
+    if constexpr (kPeriodic) dv += affineRelativeVelocity(p, static_cast<size_t>(&p - neighbors_.pairs().data()));
   }
   ContactMotion m{c.overlap, dv.dot(n), dv.dot(t) - spin};
   F = lawForce(p, m, n, t, law, dt);
@@ -184,7 +196,7 @@ inline void ContactSolver::contactForce(PairState& p, const DiscContact& c, cons
 // overlapped only about two pairs' chains. Split, each chain is half as long and more pairs are
 // in flight: a settled disc pile's step got 1.2-1.3x faster, a polygon pile's about 1.1x
 // (measured together with the one-division clipping), with bit-identical results.
-template <bool kDiscsOnly, class Force, class Apart>
+template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
 inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Apart&& apart) {
   PairState* pairs = neighbors_.pairs().data();
   int n = 0;
@@ -195,8 +207,10 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
     const Wall* walls = particles_.walls.data();
     for (int k = begin; k < end; ++k) {
       PairState& p = pairs[k];
-      const DiscContact c = p.j >= 0 ? touchDiscs(x[p.i], radius[p.i], x[p.j], radius[p.j])
-                                     : touchDiscWall(x[p.i], radius[p.i], walls[-1 - p.j]);
+      DiscContact c;
+      if constexpr (kPeriodic) c = touchDiscs(x[p.i], radius[p.i], x[p.j] + imageShift(static_cast<size_t>(k)), radius[p.j]);
+      else c = p.j >= 0 ? touchDiscs(x[p.i], radius[p.i], x[p.j], radius[p.j])
+                        : touchDiscWall(x[p.i], radius[p.i], walls[-1 - p.j]);
       if (c.overlap <= 0) {
         clearContact(p);
         apart(k);
@@ -210,7 +224,13 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
   } else {
     TouchingShapes* scratch = touchingShapes_.data() + begin;
     for (int k = begin; k < end; ++k) {
-      const ContactGeometry g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)]);
+      ContactGeometry g;
+      if constexpr (kPeriodic) {
+        const Vec2 shift = imageShift(static_cast<size_t>(k));
+        g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)], &shift);
+      } else {
+        g = pairGeometry(pairs[k], &polygonCache_[static_cast<size_t>(k)]);
+      }
       if (g.overlap <= 0) {
         clearContact(pairs[k]);
         apart(k);
@@ -230,7 +250,7 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
 // Every particle sees the same additions in the same order whatever the number of threads, so
 // the result is bit-identical. With one thread there are no slots: every share is added at
 // once. In a scene whose particle indices follow space, almost nothing waits.
-template <class Law, bool kDiscsOnly>
+template <class Law, bool kDiscsOnly, bool kPeriodic>
 void ContactSolver::pairForces(const Law& law, double dt) {
   std::vector<PairState>& pairs = neighbors_.pairs();
   if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());
@@ -243,11 +263,11 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   // carries no test for slots at all.
   auto pairRange = [&](auto threaded, int begin, int end) {
     constexpr bool kThreaded = decltype(threaded)::value;
-    forEachTouching<kDiscsOnly>(begin, end, [&](int k, const auto& g) {
+    forEachTouching<kDiscsOnly, kPeriodic>(begin, end, [&](int k, const auto& g) {
       PairState& p = pairs[static_cast<size_t>(k)];
       Vec2 F;
       double ti, tj;
-      contactForce(p, g, law, dt, F, ti, tj);
+      contactForce<kPeriodic>(p, g, law, dt, F, ti, tj);
       // x − y and x + (−y) are the same IEEE operation: a waiting share is stored negated.
       if (const int s = kThreaded ? slot[2 * k] : -1; s < 0) {
         f[p.i] -= F;
@@ -334,7 +354,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
       }
       Vec2 F;
       double ti, tj;
-      contactForce(p, c, law, dt, F, ti, tj);
+      contactForce<false>(p, c, law, dt, F, ti, tj);
       if (serial) {
         f[p.i] -= F;
         tau[p.i] -= ti;
@@ -440,14 +460,17 @@ void ContactSolver::carryPolygonCache() {
 void ContactSolver::computeForces(double dt, bool moved) {
   auto t0 = Clock::now();
   // The wide kernel knows the linear spring-dashpot with Coulomb friction or none, and rolling
-  // resistance (whose relative rotation it keeps, in a frictionless stage too).
-  const bool wide = particles_.polygons.empty() && simdPath() == SimdPath::Wide;
+  // resistance (whose relative rotation it keeps, in a frictionless stage too). It does not
+  // know a periodic cell's images: a periodic scene keeps the baseline.
+  const bool periodic = particles_.cell.has_value();
+  const bool wide = particles_.polygons.empty() && !periodic && simdPath() == SimdPath::Wide;
   // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it
   // over; after a baseline step the batch reloads it.
   if (!wide || moved) writeBackWideState();
   if (!wide) discBatchStale_ = true;
-  const bool rebuilt = neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
-                                         particles_.walls, skin_, moved);
+  const bool rebuilt = periodic ? updatePeriodicNeighbors(moved)
+                                : neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
+                                                    particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
   if (rebuilt) {
     assignDamping();
@@ -465,15 +488,18 @@ void ContactSolver::computeForces(double dt, bool moved) {
   if (material_.rollingFriction > 0 && material_.friction > 0 && !polygons) {
     const RollingLaw law{normal, {material_.tangentialStiffness, material_.friction}, rollingModel(material_)};
     if (wide) widePairForces(law, dt);
+    else if (periodic) pairForces<RollingLaw, true, true>(law, dt);
     else pairForces<RollingLaw, true>(law, dt);
   } else if (material_.friction == 0) {
     const ContactLaw<LinearSpringDashpot, Frictionless> law{normal, {}};
     if (wide) widePairForces(law, dt);
+    else if (periodic) polygons ? pairForces<decltype(law), false, true>(law, dt) : pairForces<decltype(law), true, true>(law, dt);
     else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   } else {
     const ContactLaw<LinearSpringDashpot, CundallStrack> law{
         normal, {material_.tangentialStiffness, material_.friction}};
     if (wide) widePairForces(law, dt);
+    else if (periodic) polygons ? pairForces<decltype(law), false, true>(law, dt) : pairForces<decltype(law), true, true>(law, dt);
     else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   }
   auto t2 = Clock::now();
@@ -490,7 +516,8 @@ void ContactSolver::contacts(std::vector<ContactRecord>& out) const {
     if (p.overlap <= 0) continue;
     // The cached answer as the forces saw it (positions have not moved since).
     CachedContact cache = k < polygonCache_.size() ? polygonCache_[k] : CachedContact{};
-    const ContactGeometry g = pairGeometry(p, &cache);
+    const Vec2 shift = particles_.cell ? imageShift(k) : Vec2::Zero();
+    const ContactGeometry g = pairGeometry(p, &cache, particles_.cell ? &shift : nullptr);
     ContactRecord c;
     c.i = p.i;
     c.j = p.j;
@@ -542,6 +569,10 @@ void ContactSolver::persist(StateArchive& a) {
   a.section("contacts");
   writeBackWideState();
   neighbors_.persist(a, particles_.size(), static_cast<int>(particles_.walls.size()));
+  if (particles_.cell) {
+    neighbors_.persistShifts(a);
+    a.bitwise(cellAtBuild_);
+  }
   a.bitwise(polygonCache_);
   if (a.loading()) {
     // The polygon cache is read per pair, by index, and its features index a polygon's

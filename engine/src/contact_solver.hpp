@@ -35,6 +35,9 @@ class ContactSolver {
   /// Takes in the store's particles and walls as they are now (polygon features, the skin);
   /// the next computeForces() builds a new neighbour list.
   void initialize();
+  /// Periodic cell: the cell has just advanced; the images' drift since the last build narrows
+  /// the skin left to the particles' own moves.
+  void cellAdvanced();
   /// True if some particle in [begin, end) has moved far enough that the neighbour list must
   /// be rebuilt. Reads only that range, so each thread checks the particles it just moved.
   bool movedOutOfSkin(int begin, int end) const;
@@ -53,24 +56,32 @@ class ContactSolver {
   void persist(StateArchive& a);
 
  private:
-  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache) const;
+  // `shift`: in a periodic cell, where j's image is (x_j + shift); null otherwise.
+  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache, const Vec2* shift = nullptr) const;
+  // Periodic cell (contact_solver_periodic.cpp): pair k's image shift of j, m, and the affine
+  // velocity of that image relative to i, L (x_j + shift − x_i).
+  Vec2 imageShift(size_t k) const { return particles_.cell->shift(neighbors_.shifts()[k]); }
+  Vec2 affineRelativeVelocity(const PairState& p, size_t k) const;
+  // Rebuilds the list in the cell when due: remaps a far-tilted cell, wraps the positions into
+  // it, bins them. Returns true if it rebuilt.
+  bool updatePeriodicNeighbors(bool moved);
   void assignDamping();
   void assignDeferredSlots();
   void assignRollingPairs();
   void carryPolygonCache();
   void writeBackWideState() const;
-  template <class Law, bool kDiscsOnly>
+  template <class Law, bool kDiscsOnly, bool kPeriodic = false>
   void pairForces(const Law& law, double dt);
   // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
   // each particle sums its pair ends in pair order.
   template <class Law>
   void widePairForces(const Law& law, double dt);
-  template <bool kDiscsOnly, class Force, class Apart>
+  template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
-  template <class Law>
+  template <bool kPeriodic, class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
-  template <class Law>
+  template <bool kPeriodic, class Law>
   void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
 
@@ -82,6 +93,7 @@ class ContactSolver {
   double skin_ = 0;  // m
 
   NeighborList neighbors_;
+  Eigen::Matrix2d cellAtBuild_ = Eigen::Matrix2d::Zero();  // periodic: the edges at the last build
   std::unique_ptr<PolygonCollider> polygonCollider_;
   std::vector<CachedContact> polygonCache_;  // per pair, when there are polygons
   std::vector<RollingResistance::Pair> rollingPairs_;  // per pair, with rolling resistance

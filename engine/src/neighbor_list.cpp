@@ -8,7 +8,10 @@ namespace grainlab {
 
 bool NeighborList::outdated(std::span<const Vec2> positions, int begin, int end) const {
   if (reference_.size() != positions.size()) return true;
-  const double limit2 = 0.25 * skin_ * skin_;  // half the skin, squared
+  // Half the skin, squared; in a periodic cell, half of what the cell's own motion left of it.
+  const double free = skin_ - imageDrift_;
+  if (free <= 0) return true;
+  const double limit2 = 0.25 * free * free;
   for (int k = begin; k < end; ++k) {
     if ((positions[k] - reference_[k]).squaredNorm() > limit2) return true;
   }
@@ -19,6 +22,13 @@ bool NeighborList::update(std::span<const Vec2> positions, std::span<const doubl
                           std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved) {
   if (valid_ && !moved && skin == skin_ && reference_.size() == positions.size()) return false;
   build(positions, boundingRadii, motions, walls, skin);
+  return true;
+}
+
+bool NeighborList::update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+                          std::span<const Motion> motions, const PeriodicCell& cell, double skin, bool moved) {
+  if (!rebuildDue(positions.size(), skin, moved)) return false;
+  buildPeriodic(positions, boundingRadii, motions, cell, skin);
   return true;
 }
 
@@ -107,6 +117,10 @@ void NeighborList::build(std::span<const Vec2> positions, std::span<const double
     for (int j : candidates_) pairs_.push_back({i, j});
   }
 
+  carryOver(n);
+}
+
+void NeighborList::carryOver(int n) {
   // Carry each persisting pair's contact state over: both lists are sorted by (i, j).
   auto less = [](const PairState& a, const PairState& b) { return a.i < b.i || (a.i == b.i && a.j < b.j); };
   size_t o = 0;

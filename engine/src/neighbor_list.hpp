@@ -9,6 +9,7 @@
 #include "grainlab/math.hpp"
 #include "grainlab/state_archive.hpp"
 #include "grainlab/particle.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/wall.hpp"
 
 namespace grainlab {
@@ -43,6 +44,21 @@ class NeighborList {
   /// returns true if it did.
   bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
               std::span<const Motion> motions, std::span<const Wall> walls, double skin, bool moved);
+  /// The same in a periodic cell (no walls): each pair is one particle and the other's image
+  /// in reach, shifts()[k] naming that image. The positions must be inside the cell (wrapped)
+  /// and no pair may have two images in reach: the cell's widths must exceed twice the largest
+  /// reach (std::invalid_argument otherwise). Carried-over state follows the pair (i, j)
+  /// whatever its image, so a contact keeps its history when a particle wraps.
+  bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+              std::span<const Motion> motions, const PeriodicCell& cell, double skin, bool moved);
+  /// Whether the next update() rebuilds, given `moved`.
+  bool rebuildDue(size_t particles, double skin, bool moved) const {
+    return !valid_ || moved || skin != skin_ || reference_.size() != particles;
+  }
+  /// In a periodic cell, how far the images of particles can have moved since the build beyond
+  /// the particles' own displacements (the cell's deformation, |Δh₁| + |Δh₂|, m): the skin
+  /// left to the particles is reduced by it.
+  void setImageDrift(double drift) { imageDrift_ = drift; }
   /// The list as it stands (the pairs with their history, and where it was built): enough
   /// for the next update to rebuild, or not, exactly as this one would.
   /// Checkpoints. Loading refuses (CheckpointError) a list that does not fit a world of
@@ -60,10 +76,20 @@ class NeighborList {
   /// After a rebuild, each pair's index in the list before it, or -1 for a new pair: lets
   /// per-pair state kept elsewhere follow its pair.
   const std::vector<int>& carriedFrom() const { return carriedFrom_; }
+  /// In a periodic cell, each pair's image of j (same order as pairs()); empty otherwise.
+  const std::vector<ImageShift>& shifts() const { return shifts_; }
+  /// Checkpoints of the shifts (periodic scenes only: other checkpoints keep their layout).
+  void persistShifts(StateArchive& a);
 
  private:
   void build(std::span<const Vec2> positions, std::span<const double> boundingRadii,
              std::span<const Motion> motions, std::span<const Wall> walls, double skin);
+  // The same in a periodic cell (neighbor_list_periodic.cpp): pairs with an image shift each.
+  void buildPeriodic(std::span<const Vec2> positions, std::span<const double> boundingRadii,
+                     std::span<const Motion> motions, const PeriodicCell& cell, double skin);
+  // Carries each persisting pair's state over from previous_ (both sorted by (i, j)), then
+  // indexes the new list.
+  void carryOver(int particles);
   // Each particle's pairs (adjacency) from the pair list.
   void index(int particles);
 
@@ -75,6 +101,8 @@ class NeighborList {
   std::vector<int> cellStart_, cellItems_, candidates_;
   std::vector<int> adjacencyStart_, adjacency_;
   std::vector<int> carriedFrom_;
+  std::vector<ImageShift> shifts_;   // periodic only
+  double imageDrift_ = 0;            // m, periodic only
 };
 
 }  // namespace grainlab

@@ -72,16 +72,22 @@ int plannedParticleCount(const SpecimenRecipe& recipe) {
   return plan.count + layoutRing(recipe, plan, placementRadius).count;
 }
 
-Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
-  const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
-  specimen::SpecimenRandom random(seed);
-  const bool discs = recipe.shape == SpecimenRecipe::Shape::Disc;
-  const bool clumps = recipe.shape == SpecimenRecipe::Shape::Clump;
+namespace {
 
-  // Largest first: big particles find room while the circle is empty, small ones fill in.
+// The recipe's grains, largest first (big particles find room while the container is empty,
+// small ones fill in), each turned to its orientation (drawn from `random` for a random fabric).
+struct Grains {
   std::vector<Grain> grains;
   std::vector<const SizeClass*> classOf;
   std::vector<double> angles;
+};
+Grains makeGrains(const SpecimenRecipe& recipe, const specimen::SpecimenPlan& plan, specimen::SpecimenRandom& random) {
+  const bool discs = recipe.shape == SpecimenRecipe::Shape::Disc;
+  const bool clumps = recipe.shape == SpecimenRecipe::Shape::Clump;
+  Grains out;
+  std::vector<Grain>& grains = out.grains;
+  std::vector<const SizeClass*>& classOf = out.classOf;
+  std::vector<double>& angles = out.angles;
   grains.reserve(static_cast<std::size_t>(plan.count));
   for (auto c = plan.classes.rbegin(); c != plan.classes.rend(); ++c) {
     for (int k = 0; k < c->count; ++k) {
@@ -103,6 +109,36 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
       angles.push_back(angle);
     }
   }
+  return out;
+}
+
+// Grain i as a particle at `centre`.
+ParticleSpec particleOf(const SpecimenRecipe& recipe, const Grains& g, std::size_t i, const Vec2& centre) {
+  ParticleSpec p;
+  p.shape = g.grains[i].shape;
+  p.position = centre;
+  if (recipe.shape == SpecimenRecipe::Shape::Disc) {
+    p.radius = g.classOf[i]->radius;
+  } else if (recipe.shape == SpecimenRecipe::Shape::Clump) {
+    // Body-frame members (long axis along +x about the centroid) turned by `angle`.
+    p.members = g.classOf[i]->members;
+    p.angle = g.angles[i];
+  } else {
+    // Body-frame vertices (long axis along +x, centroid at the origin) turned by `angle`:
+    // the angle is then the long axis's direction for the whole run.
+    p.vertices = g.classOf[i]->vertices;
+    p.angle = g.angles[i];
+  }
+  return p;
+}
+
+}  // namespace
+
+Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
+  const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
+  specimen::SpecimenRandom random(seed);
+  const Grains made = makeGrains(recipe, plan, random);
+  const std::vector<Grain>& grains = made.grains;
 
   double placementFraction = firstPlacementFraction(recipe);
   double placementRadius = 0;
@@ -117,24 +153,7 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
   Specimen out;
   out.specimenCount = plan.count;
   out.particles.reserve(centres.size());
-  for (std::size_t i = 0; i < centres.size(); ++i) {
-    ParticleSpec p;
-    p.shape = grains[i].shape;
-    p.position = centres[i];
-    if (discs) {
-      p.radius = classOf[i]->radius;
-    } else if (clumps) {
-      // Body-frame members (long axis along +x about the centroid) turned by `angle`.
-      p.members = classOf[i]->members;
-      p.angle = angles[i];
-    } else {
-      // Body-frame vertices (long axis along +x, centroid at the origin) turned by `angle`:
-      // the angle is then the long axis's direction for the whole run.
-      p.vertices = classOf[i]->vertices;
-      p.angle = angles[i];
-    }
-    out.particles.push_back(std::move(p));
-  }
+  for (std::size_t i = 0; i < centres.size(); ++i) out.particles.push_back(particleOf(recipe, made, i, centres[i]));
 
   const RingLayout ring = layoutRing(recipe, plan, placementRadius);
   for (int k = 0; k < ring.count; ++k) {
@@ -148,6 +167,25 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
     out.particles.push_back(std::move(p));
   }
   out.initialRingRadius = ring.radius;
+  return out;
+}
+
+CellSpecimen generateCellSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
+  const specimen::SpecimenPlan plan = specimen::planSpecimen(recipe, "assembly");
+  specimen::SpecimenRandom random(seed);
+  const Grains made = makeGrains(recipe, plan, random);
+  double placementFraction = firstPlacementFraction(recipe);
+  double side = 0;
+  std::optional<std::vector<Vec2>> placed;
+  for (int round = 0; round < kPlacementRounds && !placed; ++round, placementFraction *= kLoosenFactor) {
+    side = std::sqrt(plan.solidArea / placementFraction);
+    placed = specimen::placeInPeriodicSquare(made.grains, side, random);
+  }
+  if (!placed) throw SceneError("assembly", "could not place the particles without overlap in a periodic cell");
+  CellSpecimen out;
+  for (std::size_t i = 0; i < placed->size(); ++i) out.particles.push_back(particleOf(recipe, made, i, (*placed)[i]));
+  out.edges = Eigen::Matrix2d::Identity() * side;
+  out.solidArea = plan.solidArea;
   return out;
 }
 

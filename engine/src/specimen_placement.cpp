@@ -124,4 +124,52 @@ std::optional<std::vector<Vec2>> placeWithoutOverlap(const std::vector<Grain>& g
   return centres;
 }
 
+std::optional<std::vector<Vec2>> placeInPeriodicSquare(const std::vector<Grain>& grains, double side,
+                                                       SpecimenRandom& random) {
+  double largestReach = 0;
+  for (const Grain& g : grains) largestReach = std::max(largestReach, g.reach);
+  // Only the nearest image of a grain can overlap another: no two images within 2 reaches.
+  if (!(side > 4 * largestReach)) return std::nullopt;
+  // Two grains overlap only if their centres are in neighbouring bins (wrapping round).
+  const int bins = std::max(1, static_cast<int>(side / std::max(2 * largestReach, 1e-12)));
+  std::vector<std::vector<int>> binned(static_cast<std::size_t>(bins) * bins);
+  auto binOf = [&](double x) { return std::clamp(static_cast<int>(x / side * bins), 0, bins - 1); };
+
+  std::vector<Vec2> centres;
+  std::vector<std::vector<Vec2>> outlines;  // world vertices of placed polygons, at their centres
+  centres.reserve(grains.size());
+  outlines.reserve(grains.size());
+  for (std::size_t n = 0; n < grains.size(); ++n) {
+    const Grain& grain = grains[n];
+    bool placed = false;
+    for (int attempt = 0; attempt < kMaxPlacementTries && !placed; ++attempt) {
+      const Vec2 p(random.uniform(0, side), random.uniform(0, side));
+      const std::vector<Vec2> outline = translated(grain.vertices, p);
+      const int bx = binOf(p.x()), by = binOf(p.y());
+      bool blocked = false;
+      for (int dy = -1; dy <= 1 && !blocked; ++dy) {
+        for (int dx = -1; dx <= 1 && !blocked; ++dx) {
+          const int cx = ((bx + dx) % bins + bins) % bins, cy = ((by + dy) % bins + bins) % bins;
+          for (int other : binned[static_cast<std::size_t>(cy) * bins + cx]) {
+            const std::size_t o = static_cast<std::size_t>(other);
+            // The placed grain's image nearest p (a square cell: round each coordinate).
+            const Vec2 shift = side * Vec2(std::round((p.x() - centres[o].x()) / side), std::round((p.y() - centres[o].y()) / side));
+            if (overlaps(grain, p, outline, grains[o], centres[o] + shift, translated(outlines[o], shift))) {
+              blocked = true;
+              break;
+            }
+          }
+        }
+      }
+      if (blocked) continue;
+      binned[static_cast<std::size_t>(binOf(p.y())) * bins + binOf(p.x())].push_back(static_cast<int>(n));
+      centres.push_back(p);
+      outlines.push_back(outline);
+      placed = true;
+    }
+    if (!placed) return std::nullopt;
+  }
+  return centres;
+}
+
 }  // namespace grainlab::specimen

@@ -32,4 +32,9 @@ inline constexpr int kMaxPlacementTries = 200'000;
 std::optional<std::vector<Vec2>> placeWithoutOverlap(const std::vector<Grain>& grains, double containerRadius,
                                                      SpecimenRandom& random);
 
+/// The same in a periodic square cell [0, side)² (m): grains may cross its edges, and each is
+/// tested against the nearest image of every placed grain. Centres are inside the cell.
+std::optional<std::vector<Vec2>> placeInPeriodicSquare(const std::vector<Grain>& grains, double side,
+                                                       SpecimenRandom& random);
+
 }  // namespace grainlab::specimen

@@ -14,7 +14,7 @@ double StressTensor::q() const {
 
 StressTensor contactStress(std::span<const ContactRecord> contacts,
                            std::span<const Vec2> centroids,
-                           std::span<const unsigned char> inside, double area) {
+                           std::span<const unsigned char> inside, double area, const PeriodicCell* cell) {
   if (!(area > 0) || !std::isfinite(area))
     throw std::invalid_argument("contactStress: area must be positive and finite, got " +
                                 std::to_string(area));
@@ -24,7 +24,8 @@ StressTensor contactStress(std::span<const ContactRecord> contacts,
   const auto n = static_cast<long long>(centroids.size());
 
   double s11 = 0, s12 = 0, s21 = 0, s22 = 0;
-  auto add = [&](const Vec2& f, const Vec2& l) {
+  auto add = [&](const Vec2& f, const Vec2& branch) {
+    const Vec2 l = cell ? cell->minimumImage(branch) : branch;
     s11 += f.x() * l.x();
     s12 += f.x() * l.y();
     s21 += f.y() * l.x();

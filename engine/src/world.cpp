@@ -61,6 +61,20 @@ double World::timestep() const {
 
 double World::contactStiffness() const { return solver_->contactStiffness(timestep()); }
 
+void World::setPeriodicCell(const Eigen::Matrix2d& h) {
+  if (settings_.engine == WorldSettings::Engine::Box2d) {
+    throw std::invalid_argument("the box2d engine has no periodic cell: use the dem engine");
+  }
+  particles_.cell.emplace(h);
+  prepared_ = false;
+}
+
+void World::setCellVelocityGradient(const Eigen::Matrix2d& L) {
+  if (!particles_.cell) throw std::logic_error("setCellVelocityGradient: the world has no periodic cell");
+  if (!L.allFinite()) throw std::invalid_argument("the periodic cell's velocity gradient must be finite");
+  particles_.cell->setVelocityGradient(L);
+}
+
 void World::setKinematicVelocity(int i, const Vec2& v, double spin) {
   if (particles_.motion[i] != Motion::Kinematic) return;
   particles_.velocity[i] = v;
@@ -142,6 +156,7 @@ void World::persist(StateArchive& a) {
   a(p.cosAngle);
   a(p.sinAngle);
   a(profile_);
+  if (p.cell) a(*p.cell);  // periodic scenes only: other checkpoints keep their layout
   if (a.loading()) {
     const size_t n = static_cast<size_t>(size());
     a.require(p.position.size() == n && p.velocity.size() == n && p.force.size() == n && p.angle.size() == n &&

@@ -76,7 +76,7 @@ double momentEquilibriumAw(const FabricState& s) {
 }
 
 FabricState measureFabric(std::span<const ContactRecord> contacts, std::span<const Vec2> centroids,
-                          std::span<const unsigned char> inside) {
+                          std::span<const unsigned char> inside, const PeriodicCell* cell) {
   // Plain sums in contact order: deterministic, and the moments are all the estimators need.
   // Real and imaginary parts are kept as separate doubles so the loop stays simple scalar code.
   struct Sums {
@@ -98,7 +98,7 @@ FabricState measureFabric(std::span<const ContactRecord> contacts, std::span<con
       ++distinct;
       lastContact = e.contact;
     }
-  });
+  }, cell);
   const double n = m.n;
   const cplx se(m.ec, m.es), sfne(m.fnc, m.fns), sfte(m.ftc, m.fts), slne(m.lnc, m.lns),
       slte(m.ltc, m.lts);

@@ -110,7 +110,7 @@ FabricState PolarHistograms::anisotropy() const {
 }
 
 void measureHistograms(std::span<const ContactRecord> contacts, std::span<const Vec2> centroids,
-                       std::span<const unsigned char> inside, PolarHistograms& out) {
+                       std::span<const unsigned char> inside, PolarHistograms& out, const PeriodicCell* cell) {
   checkBins(out.bins);
   const auto bins = static_cast<size_t>(out.bins);
   // assign keeps the capacity, so a histogram measured at every sample allocates once.
@@ -138,7 +138,7 @@ void measureHistograms(std::span<const ContactRecord> contacts, std::span<const 
     out.ln[b] += e.ln;
     out.lt[b] += e.lt;
     ++out.ends;
-  });
+  }, cell);
 
   for (size_t k = 0; k < bins; ++k) {
     if (out.count[k] == 0) continue;

@@ -3,6 +3,7 @@
 // in contiguous arrays indexed by particle (structure of arrays), and the walls. The World
 // holds one; its solver (DEM or Box2D) reads and writes these arrays, analysis sees them only
 // through the World's const views.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "grainlab/material.hpp"
 #include "grainlab/math.hpp"
 #include "grainlab/particle.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/shape.hpp"
 #include "grainlab/wall.hpp"
 
@@ -48,6 +50,10 @@ struct ParticleStore {
   std::vector<Polygon> polygons;  // body frame
   std::vector<Clump> clumps;      // body frame
   std::vector<Wall> walls;
+  /// The periodic cell the particles live in, if any (docs/periodic-cell.md). With a cell,
+  /// `velocity` is each particle's fluctuation about the cell's affine field L x, and the
+  /// positions move with both.
+  std::optional<PeriodicCell> cell;
 };
 
 }  // namespace grainlab

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
 #include "grainlab/particle.hpp"
@@ -44,6 +45,18 @@ struct Specimen {
 
 /// Deterministic for a given recipe and seed.
 Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed);
+
+/// A specimen for a periodic cell: no ring; the particles of the same recipe (grading,
+/// shapes, orientations: random or bedding) placed at random without overlap, images
+/// included, in a square cell at the circle's placement area fraction (0.45 discs, 0.40
+/// others, looser if they do not fit).
+struct CellSpecimen {
+  std::vector<ParticleSpec> particles;
+  Eigen::Matrix2d edges = Eigen::Matrix2d::Zero();  ///< m, the cell's edge vectors (columns)
+  double solidArea = 0;                             ///< m², the particles' areas summed
+};
+/// Deterministic for a given recipe and seed. Throws SceneError as generateSpecimen does.
+CellSpecimen generateCellSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed);
 /// The particles generateSpecimen(recipe, any seed) makes, without placing them: the
 /// specimen's exactly, and the ring's for the first placement circle (a packing that must
 /// be placed in a looser circle gets a few more ring discs). For limits checked before a

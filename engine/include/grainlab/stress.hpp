@@ -5,6 +5,7 @@
 
 #include "grainlab/contact.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/periodic_cell.hpp"
 
 namespace grainlab {
 
@@ -17,9 +18,12 @@ struct StressTensor {
 
 /// Sums over the contact ends that belong to particles with inside[i] != 0 (the specimen),
 /// each end with its own branch vector from that particle's centroid to the contact point,
-/// divided by `area` (m²). Wall contacts count for the particle's end only.
+/// divided by `area` (m²). Wall contacts count for the particle's end only. In a periodic
+/// `cell` (area its own, det h), each branch vector runs from the nearest image of the
+/// particle's centroid, so a contact across an edge counts with the branch it acts through.
 StressTensor contactStress(std::span<const ContactRecord> contacts,
                            std::span<const Vec2> centroids,
-                           std::span<const unsigned char> inside, double area);
+                           std::span<const unsigned char> inside, double area,
+                           const PeriodicCell* cell = nullptr);
 
 }  // namespace grainlab

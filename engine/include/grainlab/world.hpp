@@ -78,6 +78,18 @@ class World {
   /// are derived from it.
   double contactStiffness() const;
 
+  /// Makes the world a periodic cell with edge vectors the columns of h, m (one corner at the
+  /// origin; particles placed anywhere are wrapped into it). Particles then meet the images
+  /// of the others across its edges, and their velocities are fluctuations about the cell's
+  /// affine field (docs/periodic-cell.md). Throws std::invalid_argument for a degenerate cell,
+  /// or with the box2d engine, which has no periodic cell.
+  void setPeriodicCell(const Eigen::Matrix2d& h);
+  /// The periodic cell, or null for a world without one.
+  const PeriodicCell* periodicCell() const { return particles_.cell ? &*particles_.cell : nullptr; }
+  /// The velocity gradient L the periodic cell (and the affine part of every particle's
+  /// motion) follows from the next step, 1/s. Requires a periodic cell.
+  void setCellVelocityGradient(const Eigen::Matrix2d& L);
+
   /// Prescribed motion of a kinematic particle (ignored for others).
   void setKinematicVelocity(int i, const Vec2& v, double spin = 0);
 

@@ -10,6 +10,7 @@
 
 #include "grainlab/contact.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/periodic_cell.hpp"
 
 namespace grainlab::analysis {
 
@@ -40,10 +41,12 @@ inline std::size_t checkedParticleCount(std::span<const Vec2> centroids,
 /// Calls visit(const ContactEnd&) for every end that belongs to a particle with inside != 0,
 /// in contact order, end i before end j. Contacts whose normals are not unit vectors give
 /// wrong angles: the engine's ContactRecord guarantees unit normals. Throws std::out_of_range
-/// for a contact naming a particle index outside the centroid array.
+/// for a contact naming a particle index outside the centroid array. In a periodic `cell`, each
+/// branch vector runs to the contact point from the nearest image of its particle's centroid
+/// (a contact across an edge is measured to the image the particle touches through).
 template <class Visit>
 void forEachInsideEnd(std::span<const ContactRecord> contacts, std::span<const Vec2> centroids,
-                      std::span<const unsigned char> inside, Visit&& visit) {
+                      std::span<const unsigned char> inside, Visit&& visit, const PeriodicCell* cell = nullptr) {
   const auto n = static_cast<long long>(checkedParticleCount(centroids, inside));
   ContactEnd end;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -67,6 +70,7 @@ void forEachInsideEnd(std::span<const ContactRecord> contacts, std::span<const V
       end.particle = c.i;
       end.normal = c.normal;
       end.branch = c.point - centroids[static_cast<std::size_t>(c.i)];
+      if (cell) end.branch = cell->minimumImage(end.branch);
       end.ln = end.branch.dot(c.normal);
       end.lt = end.branch.dot(t);
       visit(static_cast<const ContactEnd&>(end));
@@ -75,6 +79,7 @@ void forEachInsideEnd(std::span<const ContactRecord> contacts, std::span<const V
       end.particle = c.j;
       end.normal = -c.normal;
       end.branch = c.point - centroids[static_cast<std::size_t>(c.j)];
+      if (cell) end.branch = cell->minimumImage(end.branch);
       end.ln = -end.branch.dot(c.normal);
       end.lt = -end.branch.dot(t);
       visit(static_cast<const ContactEnd&>(end));

@@ -11,6 +11,7 @@
 
 #include "grainlab/contact.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/periodic_cell.hpp"
 
 namespace grainlab::analysis {
 
@@ -54,8 +55,9 @@ double momentEquilibriumAw(const FabricState& s);
 /// l_n, l_t, and a_w from moment equilibrium. One pass, no allocation. With no ends the
 /// state is all zero; with zero f0 (or l0) the force (or branch) terms are zero.
 /// Throws std::invalid_argument if inside and centroids differ in size and std::out_of_range
-/// for a contact naming a particle that does not exist.
+/// for a contact naming a particle that does not exist. In a periodic `cell`, branch vectors
+/// run to the image (forEachInsideEnd).
 FabricState measureFabric(std::span<const ContactRecord> contacts, std::span<const Vec2> centroids,
-                          std::span<const unsigned char> inside);
+                          std::span<const unsigned char> inside, const PeriodicCell* cell = nullptr);
 
 }  // namespace grainlab::analysis

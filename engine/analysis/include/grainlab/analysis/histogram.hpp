@@ -12,6 +12,7 @@
 #include "grainlab/analysis/fabric.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/math.hpp"
+#include "grainlab/periodic_cell.hpp"
 
 namespace grainlab::analysis {
 
@@ -67,7 +68,8 @@ struct PolarHistograms {
 /// [kMinHistogramBins, kMaxHistogramBins] or inside and centroids differ in size, and
 /// std::out_of_range for a contact naming a particle that does not exist.
 void measureHistograms(std::span<const ContactRecord> contacts, std::span<const Vec2> centroids,
-                       std::span<const unsigned char> inside, PolarHistograms& out);
+                       std::span<const unsigned char> inside, PolarHistograms& out,
+                       const PeriodicCell* cell = nullptr);
 
 /// {"bins", "bin_width_deg", "smoothing", "ends", "contacts", "centres_deg": [...], "count": [...],
 ///  "fn"/"ft"/"ln"/"lt": [mean or null for an empty bin], "fits": {"density"|"fn"|"ft"|"ln"|"lt":
