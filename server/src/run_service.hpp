@@ -60,6 +60,21 @@ class RunService {
   /// paper's six assemblies × N seeds, as `grainlab paper` runs them. Refused by field
   /// (paper.seeds, paper.quick, an unknown key) as a sweep spec is.
   std::string launchPaperStudy(const nlohmann::ordered_json& spec);
+  /// POST /api/studies with {"tradeoff": {"seeds": N, "quick", "presets", "axes"}}
+  /// (study_tradeoff.cpp): `grainlab tradeoff --seeds N`'s runs, planned by its code. The
+  /// references are queued now; the other settings once every reference has ended
+  /// (continueTradeoffStudy). Refused by field (tradeoff.seeds, tradeoff.presets[K],
+  /// tradeoff.axes, runs[K].FIELD) before anything is stored.
+  std::string launchTradeoffStudy(const nlohmann::ordered_json& spec);
+  /// A trade-off study's second phase: once every reference run of it has ended, its other
+  /// runs are admitted (a paired one starting from its seed's reference, start_from.run_id)
+  /// and queued; one that cannot be (its reference failed) is stored failed, saying why.
+  /// Does nothing for another study, or before, or after. Called as each of its runs ends.
+  void continueTradeoffStudy(const std::string& name);
+  /// GET /api/studies/{name}/tradeoff: the trade-off table judged by `grainlab tradeoff`'s
+  /// code once every run has ended, and kept: {"panels": [...], "csv": tradeoff.csv's text,
+  /// "runs_csv"}. 404 unknown, 409 not a trade-off study or runs left.
+  std::string studyTradeoff(const std::string& name);
   /// GET /api/studies/{name}/findings (study_findings.cpp): a paper study's findings, computed
   /// once all its runs have ended by the code `grainlab paper` uses, and kept: {"findings":
   /// [...], "csv": findings.csv's text}. 404 unknown, 409 not a paper study or runs left.
