@@ -149,6 +149,15 @@ void RunService::requeueStored() {
     }
     repo_.finishRun(listed.id, end, nullptr);
   }
+  // A trade-off study whose references all ended before the server stopped, its other
+  // settings not yet queued, queues them now (study_tradeoff.cpp).
+  for (const StudyRecord& study : repo_.launchedStudies()) {
+    try {
+      continueTradeoffStudy(study.name);
+    } catch (const std::exception& e) {
+      std::cerr << "grainlab serve: study " << study.name << ": " << e.what() << "\n";
+    }
+  }
 }
 
 RunManager::Submit RunService::enqueue(std::int64_t id, int particles, Scene scene, bool resume) {

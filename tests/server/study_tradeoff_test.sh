@@ -39,9 +39,9 @@ req GET /api/studies/to-q2/tradeoff
 expect "no table while its runs are under way: 409" 409 '"field":"study"'
 
 # The references, then the four others (queued as the references end): six runs.
-all_done() {
+all_done() {  # all_done [STUDY]
   for _ in $(seq 1200); do
-    req GET /api/studies/to-q2
+    req GET "/api/studies/${1:-to-q2}"
     [[ $(json 'b.runs + " " + (b.by_status.completed || 0)') == "6 6" ]] && return 0
     sleep 0.1
   done
@@ -105,6 +105,21 @@ check "it is kept: asked again, the same answer" test "$BODY" = "$FIRST"
 req GET "/api/studies/to-q2/bands?quantity=phi"
 check "its bands group by setting: three groups of two seeds" \
   test "$(json 'b.group_by + " " + b.groups.map(g => g.ids.length).join("")')" = "setting 222"
+# Across a restart: the same spec stopped at once, the server started again and the study
+# resumed (its interrupted runs from their checkpoints or from the start). The references and
+# then the other settings run, and the table is the same in every column but the CPU times.
+req POST /api/studies -d "${spec/to-q2/to-again}"
+expect "the same spec as another study" 201 '"name":"to-again"'
+check "the server stops with it under way" stop_server
+start_server "$TMP_ROOT/server2.log" "$TMP_ROOT/runs.db" --max-concurrent 2 --max-queued 10
+req POST /api/studies/to-again/resume
+check "...started again, the study is resumed (or had nothing to resume): $STATUS $(json "JSON.stringify(b.by_status)")" \
+  test "$STATUS" = 202 -o "$STATUS" = 409
+check "...and all six runs complete" all_done to-again
+req GET "/api/studies/to-again/tradeoff?format=csv"
+printf '%s' "$BODY" >"$TMP_ROOT/server-tradeoff.csv"
+check "its tradeoff.csv is grainlab tradeoff's too, every column but the CPU times" same_table
+
 req GET /api/studies/nothing/tradeoff
 expect "an unknown study has no table: 404" 404
 req POST /api/studies -d '{"name": "paper-q1", "paper": {"seeds": 1, "quick": true}}'
