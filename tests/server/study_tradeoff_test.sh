@@ -26,7 +26,7 @@ refused "no preset" tradeoff.presets '{"tradeoff": {"seeds": 2, "quick": true, "
 refused "an unknown key in tradeoff" tradeoff.jobs '{"tradeoff": {"seeds": 2, "jobs": 2}}'
 refused "an unknown key beside tradeoff" vary '{"tradeoff": {"seeds": 2}, "vary": {}}'
 refused "quick that is not a boolean" tradeoff.quick '{"tradeoff": {"seeds": 2, "quick": 1}}'
-refused "more runs than the server holds (the full plan: 2 presets x 24 settings)" tradeoff.seeds \
+refused "more runs than the server holds (the full plan on its two presets)" tradeoff.seeds \
   '{"tradeoff": {"seeds": 2}}'
 
 spec='{"name": "to-q2", "tradeoff": {"seeds": 2, "quick": true, "presets": ["circular-quick"], "axes": ["timestep_safety"]}}'
