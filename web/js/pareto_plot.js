@@ -31,6 +31,16 @@ export function logTicks(lo, hi) {
   return ticks.length >= 2 ? ticks : [lo, hi];
 }
 
+/** Round tick values (1, 2 or 5 times a power of ten apart) covering lo..hi, about five of them. */
+export function linearTicks(lo, hi) {
+  const raw = (hi - lo) / 5;
+  const power = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((m) => m * power).find((s) => s >= raw);
+  const ticks = [];
+  for (let v = Math.ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) ticks.push(Math.abs(v) < 1e-9 * step ? 0 : v);
+  return ticks;
+}
+
 /** The points a panel can draw: a cost > 0 and an error that is a number. */
 export function drawable(points) {
   return points.filter((p) => p.cpu_s !== null && p.cpu_s > 0 && p.error_deg !== null);
@@ -61,9 +71,7 @@ export function paretoPanelSvg(panel) {
     axes.append(el('line', { x1: x(t), x2: x(t), y1: MARGIN.top + plotH, y2: MARGIN.top + plotH + 4 }));
     axes.append(el('text', { x: x(t), y: MARGIN.top + plotH + 16, 'text-anchor': 'middle', stroke: 'none', fill: 'currentColor' }, String(Number(t.toPrecision(3)))));
   }
-  const yStep = (yHi - yLo) / 5;
-  for (let k = 0; k <= 5; k++) {
-    const v = yLo + k * yStep;
+  for (const v of linearTicks(yLo, yHi)) {
     axes.append(el('line', { x1: MARGIN.left - 4, x2: MARGIN.left, y1: y(v), y2: y(v) }));
     axes.append(el('text', { x: MARGIN.left - 7, y: y(v) + 4, 'text-anchor': 'end', stroke: 'none', fill: 'currentColor' }, String(Number(v.toPrecision(3)))));
   }
@@ -71,6 +79,8 @@ export function paretoPanelSvg(panel) {
   axes.append(el('text', { x: 14, y: MARGIN.top + plotH / 2, 'text-anchor': 'middle', stroke: 'none', fill: 'currentColor', transform: `rotate(-90 14 ${MARGIN.top + plotH / 2})` }, 'mean |angle difference| (°), 95 %'));
   svg.append(axes);
 
+  // No difference at all: where the reference sits (an interval may reach below it).
+  if (yLo < 0) svg.append(el('line', { class: 'pareto-zero', x1: MARGIN.left, x2: MARGIN.left + plotW, y1: y(0), y2: y(0), stroke: '#ddd' }));
   if (panel.noise_floor_deg !== null) {
     svg.append(el('line', { class: 'pareto-noise', x1: MARGIN.left, x2: MARGIN.left + plotW, y1: y(panel.noise_floor_deg), y2: y(panel.noise_floor_deg), stroke: '#999', 'stroke-dasharray': '5 4' }));
   }
