@@ -339,6 +339,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = threadCpuSeconds();
   std::optional<double> preparationCpu;
+  std::string study;  // the study the run belongs to, if any
   if (run->stopRequested()) {
     summary.status = RunStatus::Cancelled;  // stopped between leaving the queue and starting
   } else {
@@ -348,6 +349,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
       tradeoff::ShearingClock shearingClock(tradeoff::shearingStageName(scene));
       ObserverTee watched{&observer, &limit, &database, &shearingClock};
       const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
+      if (stored) study = stored->study;
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
       summary = run_(RunRequest{scene, checkpoint, resume, specimens_.runFolder(id)}, watched);
@@ -419,11 +421,11 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   repo_.setVoidRatio(id, summary.voidRatioAfterConsolidation);
   repo_.finishRun(id, end, [this, run, end] { published(run, end); });
   // A trade-off study queues its other settings once its references have ended.
-  if (const auto stored = repo_.findRun(id); stored && !stored->study.empty()) {
+  if (!study.empty()) {
     try {
-      continueTradeoffStudy(stored->study);
+      continueTradeoffStudy(study);
     } catch (const std::exception& e) {
-      std::cerr << "grainlab serve: study " << stored->study << ": " << e.what() << "\n";
+      std::cerr << "grainlab serve: study " << study << ": " << e.what() << "\n";
     }
   }
 }
