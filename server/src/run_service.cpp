@@ -420,14 +420,9 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   // Queued before the end, so whoever sees the run ended finds it stored.
   repo_.setVoidRatio(id, summary.voidRatioAfterConsolidation);
   repo_.finishRun(id, end, [this, run, end] { published(run, end); });
-  // A trade-off study queues its other settings once its references have ended.
-  if (!study.empty()) {
-    try {
-      continueTradeoffStudy(study);
-    } catch (const std::exception& e) {
-      std::cerr << "grainlab serve: study " << study << ": " << e.what() << "\n";
-    }
-  }
+  // A trade-off study queues its other settings once its references have ended (and one
+  // waiting for room tries again as any run ends).
+  continueTradeoffStudies(study);
 }
 
 void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& end) {

@@ -161,7 +161,11 @@ std::string RunService::launchTradeoffStudy(const nlohmann::ordered_json& spec) 
 }
 
 void RunService::continueTradeoffStudy(const std::string& name) {
-  if (const auto launched = repo_.launchedStudies(name); launched.empty() || !isTradeoff(launched.front())) return;
+  if (const auto launched = repo_.launchedStudies(name); launched.empty() || !isTradeoff(launched.front())) {
+    std::lock_guard waiting(waitingMutex_);
+    waitingTradeoffs_.erase(name);  // deleted meanwhile (or never one)
+    return;
+  }
   std::lock_guard lock(studyMutex_);
   repo_.flush().get();  // the end of the run that asked is committed
   const auto launched = repo_.launchedStudies(name);
@@ -179,6 +183,21 @@ void RunService::continueTradeoffStudy(const std::string& name) {
     if (!run || !hasEnded(run->status) || run->status == RunStatus::Cancelled || run->status == RunStatus::Interrupted)
       return;
     reference[{ensemble.settings[ensemble.runSetting[references[k].run]].preset, references[k].seed}] = *run;
+  }
+
+  // Room for all of them now, or wait: a run that ends frees a slot and asks again (the run
+  // asking now still holds its slot; a study is launched only if its whole plan fits an idle
+  // server, so its second phase fits one with its references ended).
+  const std::size_t count = tradeoff::ensembleRuns(ensemble, false).size();
+  const long room = std::max(0, manager_.maxConcurrent() - manager_.running()) +
+                    std::max(0L, static_cast<long>(options_.maxQueuedRuns) - static_cast<long>(manager_.queued()));
+  {
+    std::lock_guard waiting(waitingMutex_);
+    if (static_cast<long>(count) > room) {
+      waitingTradeoffs_.insert(name);
+      return;
+    }
+    waitingTradeoffs_.erase(name);
   }
 
   nlohmann::json entries = nlohmann::json::array();
@@ -242,6 +261,23 @@ void RunService::continueTradeoffStudy(const std::string& name) {
     repo_.finishRun(ids[k], end, nullptr);
   }
   repo_.flush().get();
+}
+
+void RunService::continueTradeoffStudies(const std::string& study) {
+  std::vector<std::string> names;
+  if (!study.empty()) names.push_back(study);
+  {
+    std::lock_guard waiting(waitingMutex_);
+    for (const std::string& name : waitingTradeoffs_)
+      if (name != study) names.push_back(name);
+  }
+  for (const std::string& name : names) {
+    try {
+      continueTradeoffStudy(name);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "grainlab serve: study %s: %s\n", name.c_str(), e.what());
+    }
+  }
 }
 
 std::string RunService::studyTradeoff(const std::string& name) {

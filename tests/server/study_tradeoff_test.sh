@@ -43,6 +43,7 @@ all_done() {  # all_done [STUDY]
   for _ in $(seq 1200); do
     req GET "/api/studies/${1:-to-q2}"
     [[ $(json 'b.runs + " " + (b.by_status.completed || 0)') == "6 6" ]] && return 0
+    [[ $(json 'b.by_status.failed || 0') == 0 ]] || break  # a failed run: it will not be six
     sleep 0.1
   done
   echo "study: $(json 'JSON.stringify(b.by_status)')"; return 1
@@ -119,6 +120,28 @@ check "...and all six runs complete" all_done to-again
 req GET "/api/studies/to-again/tradeoff?format=csv"
 printf '%s' "$BODY" >"$TMP_ROOT/server-tradeoff.csv"
 check "its tradeoff.csv is grainlab tradeoff's too, every column but the CPU times" same_table
+
+# A busy queue when the references end: one run slot, five queue places. A long run holds the
+# slot while the study is launched (its two references queue) and three tiny runs queue behind
+# them; the long run is cancelled. When the second reference ends the queue has room for two
+# runs, not the four settings: the study waits (rather than store two of them failed) and
+# queues them once two tiny runs have ended.
+check "the server stops" stop_server
+start_server "$TMP_ROOT/server3.log" "$TMP_ROOT/runs.db" --max-concurrent 1 --max-queued 5
+req POST /api/runs -d "$LONG_SCENE"
+long=$(json b.id)
+check "a long run holds the one slot" wait_status "$long" running 30
+req POST /api/studies -d "${spec/to-q2/to-busy}"
+expect "the study is launched behind it" 201 '"name":"to-busy"'
+for k in 1 2 3; do
+  req POST /api/runs -d "$TINY_SCENE"
+  expect "tiny run $k queues behind the references" 201
+done
+req POST "/api/runs/$long/cancel"
+check "all six of its runs complete, none refused for room" all_done to-busy
+req GET "/api/studies/to-busy/tradeoff?format=csv"
+printf '%s' "$BODY" >"$TMP_ROOT/server-tradeoff.csv"
+check "...and its tradeoff.csv is grainlab tradeoff's, every column but the CPU times" same_table
 
 req GET /api/studies/nothing/tradeoff
 expect "an unknown study has no table: 404" 404
