@@ -118,6 +118,14 @@ constexpr const char* kMigrations[] = {
     ALTER TABLE runs ADD COLUMN void_ratio_after_consolidation REAL;
     ALTER TABLE studies ADD COLUMN findings TEXT;
     )sql",
+    // 9 -> 10: imported sweeps become studies (sweep_import.cpp): a row with the sweep's spec and
+    // each run's values, as a launched study has, and where the row came from: 'launched' (every
+    // row before this) or 'imported'. And the part of a run's CPU time spent before its shearing
+    // stage (preparing or loading its specimen), which a trade-off study's costs are split by.
+    R"sql(
+    ALTER TABLE studies ADD COLUMN source TEXT NOT NULL DEFAULT 'launched';
+    ALTER TABLE runs ADD COLUMN preparation_cpu_seconds REAL;
+    )sql",
 };
 
 // Every statement the server runs, by name.
@@ -127,7 +135,7 @@ namespace sql {
 constexpr const char* kListColumns =
     "SELECT id, name, preset, '' AS scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
-    "origin_run_id, origin_stage, study, produced_by FROM runs";
+    "origin_run_id, origin_stage, study, produced_by, preparation_cpu_seconds FROM runs";
 constexpr const char* kRunIdsNamed = "SELECT id FROM runs WHERE name = :name ORDER BY id";
 // Imported sweeps and how many of their runs stand in each status (runs_by_study_status).
 constexpr const char* kStudyCounts =
@@ -148,10 +156,20 @@ constexpr const char* kStudyPace =
     "COALESCE(SUM(CASE WHEN status IN ('queued', 'running') "
     "THEN estimated_seconds * (1 - MIN(MAX(progress, 0), 1)) END), 0) "
     "FROM runs WHERE study = :study";
-constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status FROM studies ORDER BY name";
-constexpr const char* kOneLaunchedStudy = "SELECT name, spec, runs, created_at, status FROM studies WHERE name = :name";
+constexpr const char* kLaunchedStudies = "SELECT name, spec, runs, created_at, status, source FROM studies ORDER BY name";
+constexpr const char* kOneLaunchedStudy =
+    "SELECT name, spec, runs, created_at, status, source FROM studies WHERE name = :name";
 constexpr const char* kInsertStudy =
-    "INSERT INTO studies (name, spec, runs, created_at, status) VALUES (:name, :spec, :runs, :created_at, :status)";
+    "INSERT INTO studies (name, spec, runs, created_at, status, source) "
+    "VALUES (:name, :spec, :runs, :created_at, :status, :source)";
+// An imported sweep's row, written again as each import finds more of its runs; never a
+// launched study's.
+constexpr const char* kPutImportedStudy =
+    "INSERT INTO studies (name, spec, runs, created_at, status, source) "
+    "VALUES (:name, :spec, :runs, :created_at, 'launched', 'imported') "
+    "ON CONFLICT (name) DO UPDATE SET spec = excluded.spec, runs = excluded.runs WHERE studies.source = 'imported'";
+constexpr const char* kStudyRuns = "SELECT runs FROM studies WHERE name = :name";
+constexpr const char* kSetStudyRuns = "UPDATE studies SET runs = :runs WHERE name = :name";
 constexpr const char* kSetStudyFindings = "UPDATE studies SET findings = :findings WHERE name = :name";
 constexpr const char* kStudyFindings = "SELECT findings FROM studies WHERE name = :name AND findings IS NOT NULL";
 constexpr const char* kSetVoidRatio = "UPDATE runs SET void_ratio_after_consolidation = :e WHERE id = :id";
@@ -162,7 +180,7 @@ constexpr const char* kDeleteStudy = "DELETE FROM studies WHERE name = :name";
 constexpr const char* kFindRun =
     "SELECT id, name, preset, scene, status, error, stage, progress, particles, steps, "
     "created_at, started_at, finished_at, wall_seconds, peak_phi_mob_deg, cpu_seconds, estimated_seconds, warnings, "
-    "origin_run_id, origin_stage, study, produced_by FROM runs WHERE id = :id";
+    "origin_run_id, origin_stage, study, produced_by, preparation_cpu_seconds FROM runs WHERE id = :id";
 constexpr const char* kSamples =
     "SELECT seq, step, time, stage, vals FROM samples WHERE run_id = :id ORDER BY seq";
 constexpr const char* kHistograms =
@@ -199,7 +217,8 @@ constexpr const char* kInsertFrame =
     "VALUES (:id, :seq, :step, :time, :data)";
 constexpr const char* kFinishRun =
     "UPDATE runs SET status = :status, error = :error, stage = :stage, finished_at = :finished_at, "
-    "wall_seconds = :wall_seconds, cpu_seconds = :cpu_seconds, steps = :steps, particles = :particles, "
+    "wall_seconds = :wall_seconds, cpu_seconds = :cpu_seconds, preparation_cpu_seconds = :preparation_cpu_seconds, "
+    "steps = :steps, particles = :particles, "
     "peak_phi_mob_deg = :peak, warnings = :warnings, progress = CASE WHEN :status = 'completed' THEN 1 ELSE progress END "
     "WHERE id = :id";
 constexpr const char* kDeleteRun = "DELETE FROM runs WHERE id = :id";
@@ -333,6 +352,7 @@ RunRecord readRun(StatementUse& use) {
   if (!use.isNull(18)) r.origin = RunOrigin{use.int64At(18), use.isNull(19) ? std::string() : use.textAt(19)};
   r.study = use.textAt(20);
   r.producedBy = use.textAt(21);
+  r.preparationCpuSeconds = optionalAt(use, 22);
   return r;
 }
 
@@ -760,7 +780,8 @@ std::future<std::vector<std::int64_t>> Repository::insertStudy(const StudyRecord
           .bindText(":spec", study.spec)
           .bindText(":runs", listed.dump())
           .bind(":created_at", study.createdAt)
-          .bindText(":status", study.status);
+          .bindText(":status", study.status)
+          .bindText(":source", study.source);
       use.run();
       w.db.exec("RELEASE study");
     } catch (...) {
@@ -774,6 +795,64 @@ std::future<std::vector<std::int64_t>> Repository::insertStudy(const StudyRecord
       return;
     }
     w.resolveAfterCommit(done, std::move(ids));
+  });
+  return future;
+}
+
+std::future<std::vector<std::int64_t>> Repository::appendStudyRuns(const std::string& name, const std::string& entries,
+                                                                  const std::vector<RunRecord>& runs) {
+  auto done = std::make_shared<std::promise<std::vector<std::int64_t>>>();
+  auto future = done->get_future();
+  enqueue([name, entries, runs, done](Writer& w) {
+    std::vector<std::int64_t> ids;
+    // All or nothing, as insertStudy: the study's list never names a run that is not stored.
+    w.db.exec("SAVEPOINT study_runs");
+    try {
+      nlohmann::json listed;
+      {
+        auto read = w.statement(sql::kStudyRuns).use();
+        read.bindText(":name", name);
+        if (!read.step()) throw std::runtime_error("no study '" + name + "'");
+        listed = nlohmann::json::parse(read.textAt(0));
+      }
+      const nlohmann::json added = nlohmann::json::parse(entries);
+      for (const RunRecord& run : runs) ids.push_back(insertRunRow(w.statement(sql::kInsertRun), w.db, run));
+      for (std::size_t k = 0; k < ids.size() && k < added.size(); ++k) {
+        listed.push_back(added[k]);
+        listed.back()["id"] = ids[k];
+      }
+      auto use = w.statement(sql::kSetStudyRuns).use();
+      use.bindText(":name", name).bindText(":runs", listed.dump());
+      use.run();
+      w.db.exec("RELEASE study_runs");
+    } catch (...) {
+      try {
+        w.db.exec("ROLLBACK TO study_runs");
+        w.db.exec("RELEASE study_runs");
+      } catch (const std::exception&) {
+        // SQLite rolled the whole transaction back already (a full disk).
+      }
+      w.rejectAfterCommit(done);
+      return;
+    }
+    w.resolveAfterCommit(done, std::move(ids));
+  });
+  return future;
+}
+
+std::future<bool> Repository::putImportedStudy(const StudyRecord& study) {
+  auto done = std::make_shared<std::promise<bool>>();
+  auto future = done->get_future();
+  enqueue([study, done](Writer& w) {
+    try {
+      auto use = w.statement(sql::kPutImportedStudy).use();
+      use.bindText(":name", study.name).bindText(":spec", study.spec).bindText(":runs", study.runs).bind(":created_at", study.createdAt);
+      use.run();
+    } catch (...) {
+      w.rejectAfterCommit(done);
+      return;
+    }
+    w.resolveAfterCommit(done, true);
   });
   return future;
 }
@@ -832,7 +911,7 @@ std::vector<StudyRecord> Repository::launchedStudies(const std::string& only) {
   if (!only.empty()) use.bindText(":name", only);
   std::vector<StudyRecord> out;
   while (use.step())
-    out.push_back({use.textAt(0), use.textAt(1), use.textAt(2), use.doubleAt(3), use.textAt(4)});
+    out.push_back({use.textAt(0), use.textAt(1), use.textAt(2), use.doubleAt(3), use.textAt(4), use.textAt(5)});
   return out;
 }
 
@@ -906,6 +985,7 @@ void Repository::finishRun(std::int64_t id, RunEnd end, std::function<void()> af
           .bind(":particles", end.particles);
       bindOptional(use, ":wall_seconds", end.wallSeconds);
       bindOptional(use, ":cpu_seconds", end.cpuSeconds);
+      bindOptional(use, ":preparation_cpu_seconds", end.preparationCpuSeconds);
       bindOptional(use, ":peak", end.peakPhiMobDeg);
       use.bindText(":warnings", end.warnings);
       use.run();

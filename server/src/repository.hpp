@@ -32,6 +32,7 @@ struct RunEnd {
   double finishedAt = 0;
   std::optional<double> wallSeconds;
   std::optional<double> cpuSeconds;
+  std::optional<double> preparationCpuSeconds;  ///< of cpuSeconds, before the shearing stage
   std::int64_t steps = 0;
   int particles = 0;
   std::optional<double> peakPhiMobDeg;
@@ -70,6 +71,8 @@ struct StudyRecord {
   std::string runs = "[]";
   double createdAt = 0;
   std::string status = "launched";
+  /// "launched" here (POST /api/studies) or "imported" (a `grainlab sweep` folder, sweep_import).
+  std::string source = "launched";
 };
 
 class Repository {
@@ -124,6 +127,16 @@ class Repository {
   /// the runs' ids in order, or throws with nothing stored (a name already taken, a full disk).
   /// study.runs' entries get their run's "id".
   std::future<std::vector<std::int64_t>> insertStudy(const StudyRecord& study, const std::vector<RunRecord>& runs);
+  /// More runs for a launched study (a trade-off study's second phase, study_tradeoff.cpp):
+  /// `entries` a JSON array of {"name", "parameters"}, one per run, appended to its list with
+  /// the runs' ids; all or nothing, as insertStudy.
+  std::future<std::vector<std::int64_t>> appendStudyRuns(const std::string& name, const std::string& entries,
+                                                         const std::vector<RunRecord>& runs);
+  /// An imported sweep's row (study.source is taken as "imported"): inserted, or its spec and
+  /// runs replaced if the sweep was imported before. A launched study of that name is left as
+  /// it is (the caller refuses the import first).
+  /// Resolves to true once committed (or throws: nothing stored).
+  std::future<bool> putImportedStudy(const StudyRecord& study);
   void setStudyStatus(const std::string& name, const std::string& status);
   /// A paper study's findings, once computed (study_findings.cpp); studyFindings() reads them.
   void setStudyFindings(const std::string& name, const std::string& findings);

@@ -184,6 +184,14 @@ ApiResponse Router::route(const ApiRequest& request) {
     if (format == "json") return textResponse(200, "application/json", std::move(body));
     return textResponse(200, "text/csv; charset=utf-8", nlohmann::json::parse(body)["csv"].get<std::string>());
   }
+  if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "tradeoff") {
+    if (!read) return methodNotAllowed(method, path, "GET, HEAD");
+    const auto format = query.contains("format") ? query.at("format") : std::string("json");
+    if (format != "json" && format != "csv") throw ApiError(400, "must be json or csv", "format");
+    std::string body = service_.studyTradeoff(std::string(seg[2]));
+    if (format == "json") return textResponse(200, "application/json", std::move(body));
+    return textResponse(200, "text/csv; charset=utf-8", nlohmann::json::parse(body)["csv"].get<std::string>());
+  }
   if (seg.size() == 4 && seg[1] == "studies" && seg[3] == "bands") {
     if (!read) return methodNotAllowed(method, path, "GET, HEAD");
     return textResponse(200, "application/json", service_.studyBands(std::string(seg[2]), query));

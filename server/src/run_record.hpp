@@ -34,6 +34,9 @@ struct RunRecord {
   std::optional<double> startedAt, finishedAt;
   std::optional<double> wallSeconds;    ///< the simulation's own wall time
   std::optional<double> cpuSeconds;     ///< CPU time of the thread that ran it (see run_service)
+  /// Of cpuSeconds, the part before the first sample of its shearing stage: preparing (or
+  /// loading) its specimen. None for a run without shearing, or resumed from a checkpoint.
+  std::optional<double> preparationCpuSeconds;
   /// The wall time it needs at least, estimated when queued (RunCost::certainSeconds: the
   /// free and shearing stages; compaction and consolidation end on criteria and add to it).
   std::optional<double> estimatedSeconds;

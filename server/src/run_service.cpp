@@ -16,6 +16,7 @@
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/specimen.hpp"
+#include "grainlab/studies/tradeoff/shearing_clock.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
 #include "grainlab/validity.hpp"
 #include "api_types.hpp"
@@ -147,6 +148,15 @@ void RunService::requeueStored() {
       end.error = std::string("its stored scene could not be queued again: ") + e.what();
     }
     repo_.finishRun(listed.id, end, nullptr);
+  }
+  // A trade-off study whose references all ended before the server stopped, its other
+  // settings not yet queued, queues them now (study_tradeoff.cpp).
+  for (const StudyRecord& study : repo_.launchedStudies()) {
+    try {
+      continueTradeoffStudy(study.name);
+    } catch (const std::exception& e) {
+      std::cerr << "grainlab serve: study " << study.name << ": " << e.what() << "\n";
+    }
   }
 }
 
@@ -328,17 +338,23 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   RunSummary summary;
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = threadCpuSeconds();
+  std::optional<double> preparationCpu;
+  std::string study;  // the study the run belongs to, if any
   if (run->stopRequested()) {
     summary.status = RunStatus::Cancelled;  // stopped between leaving the queue and starting
   } else {
     try {
       WallTimeLimit limit(options_.maxRunSeconds);
       DatabaseWatch database(repo_);
-      ObserverTee watched{&observer, &limit, &database};
+      tradeoff::ShearingClock shearingClock(tradeoff::shearingStageName(scene));
+      ObserverTee watched{&observer, &limit, &database, &shearingClock};
       const auto stored = repo_.findRun(id);  // the scene as submitted goes into the checkpoint
+      if (stored) study = stored->study;
       const CheckpointPolicy checkpoint{checkpointPath(id), scene.output.checkpointEverySeconds,
                                         stored ? stored->scene : std::string()};
       summary = run_(RunRequest{scene, checkpoint, resume, specimens_.runFolder(id)}, watched);
+      // A resumed run's clock started at its checkpoint: its preparation's cost is not known.
+      if (!resume && std::isfinite(shearingClock.reached())) preparationCpu = shearingClock.reached() - cpu0;
       if (stored && stored->origin) summary.error = specimens_.withoutPaths(summary.error, scene, *stored->origin);
       if (summary.status == RunStatus::Interrupted && limit.exceeded() && !run->stopRequested()) {
         summary.status = RunStatus::Failed;
@@ -386,6 +402,7 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   end.finishedAt = unixNow();
   end.wallSeconds = wall;
   end.cpuSeconds = cpu;
+  end.preparationCpuSeconds = preparationCpu;
   end.steps = summary.steps > 0 ? summary.steps : state.steps;
   end.particles = summary.particles > 0 ? summary.particles : state.particles;
   if (end.status == RunStatus::Completed || summary.peakPhiMobDeg != 0) end.peakPhiMobDeg = summary.peakPhiMobDeg;
@@ -403,6 +420,9 @@ void RunService::execute(const std::shared_ptr<LiveRun>& run, const Scene& scene
   // Queued before the end, so whoever sees the run ended finds it stored.
   repo_.setVoidRatio(id, summary.voidRatioAfterConsolidation);
   repo_.finishRun(id, end, [this, run, end] { published(run, end); });
+  // A trade-off study queues its other settings once its references have ended (and one
+  // waiting for room tries again as any run ends).
+  continueTradeoffStudies(study);
 }
 
 void RunService::published(const std::shared_ptr<LiveRun>& run, const RunEnd& end) {
@@ -478,6 +498,7 @@ nlohmann::json RunService::runJson(const RunRecord& r, bool withScene) {
                                          : nlohmann::json(nullptr)},
       {"wall_seconds", orNull(merged.wallSeconds)},
       {"cpu_seconds", orNull(merged.cpuSeconds)},
+      {"preparation_cpu_seconds", orNull(merged.preparationCpuSeconds)},
       {"estimated_seconds", orNull(merged.estimatedSeconds)},
       {"peak_phi_mob_deg", orNull(merged.peakPhiMobDeg)},
       {"error", merged.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(merged.error)},

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,24 @@ class RunService {
   /// paper's six assemblies × N seeds, as `grainlab paper` runs them. Refused by field
   /// (paper.seeds, paper.quick, an unknown key) as a sweep spec is.
   std::string launchPaperStudy(const nlohmann::ordered_json& spec);
+  /// POST /api/studies with {"tradeoff": {"seeds": N, "quick", "presets", "axes"}}
+  /// (study_tradeoff.cpp): `grainlab tradeoff --seeds N`'s runs, planned by its code. The
+  /// references are queued now; the other settings once every reference has ended
+  /// (continueTradeoffStudy). Refused by field (tradeoff.seeds, tradeoff.presets[K],
+  /// tradeoff.axes, runs[K].FIELD) before anything is stored.
+  std::string launchTradeoffStudy(const nlohmann::ordered_json& spec);
+  /// A trade-off study's second phase: once every reference run of it has ended, its other
+  /// runs are admitted (a paired one starting from its seed's reference, start_from.run_id)
+  /// and queued; one that cannot be (its reference failed) is stored failed, saying why.
+  /// Does nothing for another study, or before, or after. Waits (and is asked again as any
+  /// run ends) while the queue has no room for all of them. Called as each of its runs ends.
+  void continueTradeoffStudy(const std::string& name);
+  /// continueTradeoffStudy for the run's study and for every study waiting for room.
+  void continueTradeoffStudies(const std::string& study);
+  /// GET /api/studies/{name}/tradeoff: the trade-off table judged by `grainlab tradeoff`'s
+  /// code once every run has ended, and kept: {"panels": [...], "csv": tradeoff.csv's text,
+  /// "runs_csv"}. 404 unknown, 409 not a trade-off study or runs left.
+  std::string studyTradeoff(const std::string& name);
   /// GET /api/studies/{name}/findings (study_findings.cpp): a paper study's findings, computed
   /// once all its runs have ended by the code `grainlab paper` uses, and kept: {"findings":
   /// [...], "csv": findings.csv's text}. 404 unknown, 409 not a paper study or runs left.
@@ -175,6 +194,10 @@ class RunService {
   std::map<std::int64_t, std::shared_ptr<LiveRun>> live_;
   bool stopped_ = false;
   std::mutex studyMutex_;  ///< one study launched or cancelled at a time
+  /// Trade-off studies whose references have ended but whose other runs found no room in the
+  /// queue: tried again as any run ends (study_tradeoff.cpp).
+  std::mutex waitingMutex_;
+  std::set<std::string> waitingTradeoffs_;
   double startedAt_;
 };
 

@@ -48,6 +48,7 @@ std::string RunService::studyBands(const std::string& name, const QueryParameter
     if (spec.is_object() && spec.contains("vary") && spec["vary"].is_object())
       for (const auto& [path, values] : spec["vary"].items()) paths.push_back(path);
     if (spec.is_object() && spec.contains("paper")) paths = {"preset", "seed"};  // a paper study's runs
+    if (spec.is_object() && spec.contains("tradeoff")) paths = {"setting", "preset", "seed"};  // study_tradeoff.cpp
     const auto runs = nlohmann::json::parse(launched.front().runs, nullptr, false);
     if (runs.is_array())
       for (const auto& run : runs)

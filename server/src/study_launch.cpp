@@ -62,6 +62,7 @@ std::string RunService::launchStudy(const std::string& body) {
   if (spec.is_discarded()) throw ApiError(400, "the body is not valid JSON", "(json)");
   if (!spec.is_object()) throw ApiError(400, "expected a sweep spec: {name, base, vary, mode}", "(json)");
   if (spec.contains("paper")) return launchPaperStudy(spec);  // study_paper.cpp
+  if (spec.contains("tradeoff")) return launchTradeoffStudy(spec);  // study_tradeoff.cpp
   const std::string name = studyName(spec);
   if (spec.contains("prepare"))
     throw ApiError(400,

@@ -65,7 +65,7 @@ bool underWay(const nlohmann::json& study) {
 }
 
 void addLaunch(nlohmann::json& study, const StudyRecord& launched, bool detail) {
-  study["source"] = "launched";
+  study["source"] = launched.source;
   study["created_at"] = isoTime(launched.createdAt);
   study["cancelled"] = launched.status == "cancelled";
   if (!detail) return;

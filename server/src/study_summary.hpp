@@ -23,8 +23,9 @@ void addTimeLeft(nlohmann::json& study, const StudyPace& pace, int slots);
 /// Whether the study (studyJson) has a run queued or running: only then is its pace read.
 bool underWay(const nlohmann::json& study);
 
-/// What a study launched here adds (POST /api/studies): "source": "launched" (else
-/// "imported"), "created_at", "cancelled"; with `detail` its "run_parameters"
+/// What a study with a row adds (launched here, POST /api/studies, or an imported sweep's):
+/// "source": "launched" or "imported" (also without a row: a sweep imported before schema 10),
+/// "created_at", "cancelled"; with `detail` its "run_parameters"
 /// ([{"id", "name", "parameters": {path: value}}] in the spec's order).
 void addLaunch(nlohmann::json& study, const StudyRecord& launched, bool detail);
 /// The study's JSON text with the launched study's "spec" last, as it was posted: its "vary"

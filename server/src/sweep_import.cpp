@@ -81,6 +81,19 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
                                  ? spec["base"]["preset"].get<std::string>()
                                  : std::string();
 
+  // The study's row: the spec as the sweep folder keeps it (its "vary" in its order, the order
+  // of its runs) and every run's values, as a launched study's (study_launch.cpp).
+  if (const auto existing = repo.launchedStudies(sweepName); !existing.empty() && existing.front().source != "imported")
+    throw std::invalid_argument("a study named '" + sweepName + "' was launched on this server: the sweep " +
+                                dir.string() + " cannot be imported under its name (give its spec another name)");
+  nlohmann::ordered_json orderedSpec = nlohmann::ordered_json::object();
+  {
+    std::ifstream in(sweepFile);
+    const auto ordered = nlohmann::ordered_json::parse(in, nullptr, false);
+    if (ordered.is_object() && ordered.contains("spec")) orderedSpec = ordered["spec"];
+  }
+  nlohmann::json listed = nlohmann::json::array();
+
   SweepImport outcome;
   for (const nlohmann::json& entry : sweep["runs"]) {
     const std::string id = entry.at("id").get<std::string>();
@@ -93,14 +106,19 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     const std::string scene = readJson(runDir / "scene.json").dump();
     RunRecord record;
     record.name = sweepName + "/" + id;
+    const nlohmann::json parameters = entry.value("parameters", nlohmann::json::object());
     // Importing twice adds nothing: a run of this name with this scene is there already.
-    bool seen = false;
+    std::optional<std::int64_t> seen;
     for (const std::int64_t storedId : repo.runIdsNamed(record.name)) {
       const std::optional<RunRecord> stored = repo.findRun(storedId);
-      if ((seen = stored && stored->scene == scene)) break;
+      if (stored && stored->scene == scene) {
+        seen = storedId;
+        break;
+      }
     }
     if (seen) {
       ++outcome.alreadyThere;
+      listed.push_back({{"id", *seen}, {"name", record.name}, {"parameters", parameters}});
       continue;
     }
     record.preset = preset;
@@ -126,8 +144,15 @@ SweepImport importSweep(Repository& repo, const fs::path& dir) {
     if (summary.contains("warnings")) end.warnings = summary["warnings"].dump();
     repo.finishRun(runId, end, [] {});
     outcome.ids.push_back(runId);
+    listed.push_back({{"id", runId}, {"name", record.name}, {"parameters", parameters}});
   }
-  repo.flush().get();
+  StudyRecord study;
+  study.name = sweepName;
+  study.spec = orderedSpec.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  study.runs = listed.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  study.createdAt = unixNow();
+  study.source = "imported";
+  repo.putImportedStudy(study).get();  // after the runs, in the same queue of writes
   return outcome;
 }
 

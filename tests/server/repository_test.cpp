@@ -23,6 +23,7 @@ std::string freshDb(const std::string& name) {
 // What a database from before studies looked like (schema 5): no study column, no list indexes,
 // no studies table.
 constexpr const char* kUndoStudies =
+    "ALTER TABLE runs DROP COLUMN preparation_cpu_seconds; "  // schema 10
     "ALTER TABLE runs DROP COLUMN void_ratio_after_consolidation; "  // schema 9
     "DROP TABLE studies; DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
     "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
@@ -228,6 +229,85 @@ TEST(Repository, AStudyIsStoredWithItsRunsOrNotAtAll) {
   repo.deleteStudy("friction");
   repo.flush().get();
   EXPECT_TRUE(repo.launchedStudies().empty());
+}
+
+TEST(Repository, UpgradesSchema9StudiesToLaunchedOnesAndStoresImportedSweeps) {
+  const auto path = freshDb("schema9");
+  {
+    Repository repo(path);
+    StudyRecord study;
+    study.name = "launched-before";
+    study.spec = R"({"name":"launched-before"})";
+    study.createdAt = 1700000000.0;
+    repo.insertStudy(study, {}).get();
+  }
+  {
+    // What a version-9 database looked like: studies without their source, runs without the
+    // CPU time of their preparation.
+    Database db(path, true);
+    db.exec("ALTER TABLE studies DROP COLUMN source; ALTER TABLE runs DROP COLUMN preparation_cpu_seconds; "
+            "PRAGMA user_version = 9;");
+  }
+  Repository repo(path);
+  ASSERT_EQ(repo.launchedStudies("launched-before").size(), 1u);
+  // Schema 10's run column: none before, stored with the run's end after.
+  const auto before = repo.insertRun(queued("before")).get();
+  EXPECT_FALSE(repo.findRun(before)->preparationCpuSeconds);
+  RunEnd end;
+  end.status = RunStatus::Completed;
+  end.cpuSeconds = 2.5;
+  end.preparationCpuSeconds = 1.5;
+  repo.finishRun(before, end, {});
+  repo.flush().get();
+  EXPECT_DOUBLE_EQ(*repo.findRun(before)->preparationCpuSeconds, 1.5);
+  EXPECT_DOUBLE_EQ(*repo.listRuns().back().preparationCpuSeconds, 1.5);
+  EXPECT_EQ(repo.launchedStudies("launched-before")[0].source, "launched");  // every row before 10 was
+
+  StudyRecord sweep;
+  sweep.name = "friction";
+  sweep.spec = R"({"name":"friction","vary":{"material.friction":[0.3]}})";
+  sweep.runs = R"([{"id":1,"name":"friction/001","parameters":{"material.friction":0.3}}])";
+  sweep.createdAt = 1700000001.0;
+  EXPECT_TRUE(repo.putImportedStudy(sweep).get());
+  auto stored = repo.launchedStudies("friction");
+  ASSERT_EQ(stored.size(), 1u);
+  EXPECT_EQ(stored[0].source, "imported");
+  EXPECT_EQ(stored[0].runs, sweep.runs);
+  // Imported again with more runs: the same row, its runs replaced.
+  sweep.runs = R"([{"id":1,"name":"friction/001"},{"id":2,"name":"friction/002"}])";
+  repo.putImportedStudy(sweep).get();
+  ASSERT_EQ(repo.launchedStudies().size(), 2u);
+  EXPECT_EQ(repo.launchedStudies("friction")[0].runs, sweep.runs);
+  // Never over a launched study's row.
+  sweep.name = "launched-before";
+  repo.putImportedStudy(sweep).get();
+  EXPECT_EQ(repo.launchedStudies("launched-before")[0].spec, R"({"name":"launched-before"})");
+  EXPECT_EQ(repo.launchedStudies("launched-before")[0].source, "launched");
+  Database db(path, false);
+  EXPECT_EQ(db.userVersion(), Repository::schemaVersion());
+}
+
+TEST(Repository, AppendsRunsToAStudyWithTheirIds) {
+  const auto path = freshDb("append");
+  Repository repo(path);
+  StudyRecord study;
+  study.name = "tradeoff";
+  study.spec = R"({"tradeoff":{"seeds":2}})";
+  study.runs = R"([{"name":"tradeoff/ref"}])";
+  RunRecord ref = queued("tradeoff/ref");
+  ref.study = "tradeoff";
+  const auto first = repo.insertStudy(study, {ref}).get();
+  RunRecord later = queued("tradeoff/later");
+  later.study = "tradeoff";
+  const auto ids = repo.appendStudyRuns("tradeoff", R"([{"name":"tradeoff/later"}])", {later}).get();
+  ASSERT_EQ(ids.size(), 1u);
+  EXPECT_EQ(repo.findRun(ids[0])->study, "tradeoff");
+  EXPECT_EQ(repo.launchedStudies("tradeoff")[0].runs, R"([{"id":)" + std::to_string(first[0]) +
+                                                           R"(,"name":"tradeoff/ref"},{"id":)" + std::to_string(ids[0]) +
+                                                           R"(,"name":"tradeoff/later"}])");
+  // No such study: nothing stored.
+  EXPECT_THROW(repo.appendStudyRuns("nothing", R"([{"name":"x"}])", {queued("x")}).get(), std::exception);
+  EXPECT_EQ(repo.listRuns().size(), 2u);
 }
 
 TEST(Repository, RefusesADatabaseFromANewerProgram) {

@@ -224,7 +224,8 @@ TEST(RunQuery, AnOlderDatabaseGainsTheIndexesAndItsImportedStudies) {
   }
   {
     Database db(path, true);
-    db.exec("ALTER TABLE runs DROP COLUMN void_ratio_after_consolidation; "  // schema 9
+    db.exec("ALTER TABLE runs DROP COLUMN preparation_cpu_seconds; "  // schema 10
+            "ALTER TABLE runs DROP COLUMN void_ratio_after_consolidation; "  // schema 9
             "DROP INDEX runs_by_created_at; DROP INDEX runs_by_status; DROP INDEX runs_by_preset; DROP INDEX runs_by_study; "
             "DROP INDEX runs_by_study_status; DROP INDEX runs_by_name; DROP INDEX runs_by_wall_seconds; "
             "DROP INDEX runs_by_peak_phi_mob_deg; ALTER TABLE runs DROP COLUMN study; DROP TABLE studies;");

@@ -71,6 +71,8 @@ export const api = {
   deleteStudy: (name) => request('DELETE', `/api/studies/${encodeURIComponent(name)}`, { expect: 'text' }),
   /** A paper study's findings ({findings: [{number, claim, verdict, checks: [...]}], csv}), once its runs have ended. */
   studyFindings: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}/findings`),
+  /** A trade-off study's table ({panels: [{title, noise_floor_deg, points: [...]}], csv, runs_csv}), once its runs have ended. */
+  studyTradeoff: (name) => request('GET', `/api/studies/${encodeURIComponent(name)}/tradeoff`),
   /** A cancelled or interrupted study's runs queued again, from their checkpoints where they have one. */
   resumeStudy: (name) => request('POST', `/api/studies/${encodeURIComponent(name)}/resume`),
   /**

@@ -1,7 +1,8 @@
 // Studies: the sweeps launched here or imported, with their progress (done, running, failed,
 // queued), polled every 2 s while any is under way; a form that launches a sweep (a preset,
 // `path = values` rows, seeds: POST /api/studies) showing its run count first and the
-// server's refusal beside the row it names; cancel. A study's name opens its page
+// server's refusal beside the row it names; the paper and the speed-accuracy trade-off
+// (`grainlab tradeoff --seeds N`) launched by their own small forms; cancel. A study's name opens its page
 // (#/studies/NAME, study_view.js) and its run count the runs list filtered by it.
 import { api } from '../api.js';
 import { timeLeft } from '../format.js';
@@ -168,6 +169,48 @@ export function studiesView(root) {
     h('div', { class: 'form-actions' }, paperButton),
     paperError);
 
+  // ---- the trade-off: `grainlab tradeoff --seeds N`, speed against accuracy ----
+  const tradeoffName = h('input', { id: 'tradeoff-name', type: 'text', autocomplete: 'off', placeholder: 'e.g. timestep-4 (empty: tradeoff-N-seeds)' });
+  const tradeoffSeeds = h('input', { id: 'tradeoff-seeds', type: 'number', min: '2', step: '1', value: '2' });
+  const tradeoffQuick = h('input', { id: 'tradeoff-quick', type: 'checkbox', checked: true });
+  const tradeoffPresets = h('input', { id: 'tradeoff-presets', type: 'text', autocomplete: 'off', placeholder: 'e.g. circular-quick (empty: the plan\'s)' });
+  const tradeoffAxes = h('input', { id: 'tradeoff-axes', type: 'text', autocomplete: 'off', placeholder: 'e.g. timestep_safety, inertial_number (empty: all)' });
+  const tradeoffError = h('div', { class: 'form-error', hidden: true });
+  const tradeoffButton = h('button', { type: 'submit', class: 'primary' }, 'Launch the trade-off');
+  const names = (text) => text.split(',').map((s) => s.trim()).filter(Boolean);
+  async function launchTradeoff() {
+    tradeoffError.hidden = true;
+    const seeds = Number(tradeoffSeeds.value);
+    const body = { tradeoff: { seeds: Number.isInteger(seeds) ? seeds : tradeoffSeeds.value, quick: tradeoffQuick.checked } };
+    if (names(tradeoffPresets.value).length) body.tradeoff.presets = names(tradeoffPresets.value);
+    if (names(tradeoffAxes.value).length) body.tradeoff.axes = names(tradeoffAxes.value);
+    if (tradeoffName.value.trim()) body.name = tradeoffName.value.trim();
+    tradeoffButton.disabled = true;
+    try {
+      const study = await api.launchStudy(body);
+      tradeoffName.value = '';
+      await refresh();
+      count.textContent = `launched ${study.name}: ${study.runs} reference runs first`;
+    } catch (error) {
+      tradeoffError.textContent = error.field ? `${error.field}: ${error.message}` : error.message;
+      tradeoffError.hidden = false;
+    } finally {
+      tradeoffButton.disabled = false;
+    }
+  }
+  const tradeoffForm = h('form', { class: 'panel tradeoff-form', novalidate: true, onsubmit: (event) => { event.preventDefault(); launchTradeoff(); } },
+    h('h3', {}, 'Launch a speed-accuracy trade-off'),
+    h('div', { class: 'hint' }, 'Each fidelity setting (timestep, shearing rate, vertices, sampling, engine) on N seeds against the most accurate setting, as grainlab tradeoff --seeds N runs it: the references first, then the settings that shear their specimens; once they have run, the study\'s page shows the Pareto plot and tradeoff.csv.'),
+    h('div', { class: 'form-grid' },
+      h('label', { for: 'tradeoff-name' }, 'Name'), h('div', { class: 'field-input' }, tradeoffName),
+      h('label', { for: 'tradeoff-seeds' }, 'Seeds'), h('div', { class: 'field-input' }, tradeoffSeeds),
+      h('label', { for: 'tradeoff-quick' }, 'Quick plan'), h('div', { class: 'field-input' }, tradeoffQuick),
+      h('label', { for: 'tradeoff-presets' }, 'Presets'), h('div', { class: 'field-input' }, tradeoffPresets),
+      h('label', { for: 'tradeoff-axes' }, 'Axes'), h('div', { class: 'field-input' }, tradeoffAxes,
+        h('div', { class: 'hint' }, 'timestep_safety, inertial_number, vertices, sample_strain, engine, noise; the reference always runs'))),
+    h('div', { class: 'form-actions' }, tradeoffButton),
+    tradeoffError);
+
   // ---- the list ----
   const rowsByName = new Map();
   function studyRow(study) {
@@ -255,7 +298,7 @@ export function studiesView(root) {
         h('thead', {}, h('tr', {}, ['Study', 'Source', 'Status', 'Progress', 'Runs', ''].map((t) => h('th', {}, t)))),
         tableBody),
       empty, listError),
-    form, paperForm);
+    form, paperForm, tradeoffForm);
 
   (async () => {
     try {

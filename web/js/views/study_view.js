@@ -9,6 +9,7 @@ import { h, replaceChildren } from '../dom.js';
 import { ChartPanel, joinTables } from '../chart_panel.js';
 import { COMPARE_CHARTS, X_AXES } from '../chart_specs.js';
 import { sig, timeLeft } from '../format.js';
+import { paretoPanelSvg } from '../pareto_plot.js';
 
 const POLL_MS = 2000;
 const UNDER_WAY = new Set(['running', 'queued']);
@@ -68,6 +69,13 @@ export function studyView(root, name) {
     h('table', { class: 'runs findings' },
       h('thead', {}, h('tr', {}, ['#', 'Claim', 'Verdict', 'Subject', 'Estimate', '95 % interval', 'Check'].map((t) => h('th', {}, t)))),
       findingsBody));
+  // A trade-off study's Pareto plot and tradeoff.csv, once its runs have ended
+  // (GET /api/studies/NAME/tradeoff).
+  const tradeoffHint = h('div', { class: 'hint' });
+  const tradeoffPlots = h('div', { class: 'pareto-plots' });
+  const tradeoffDownload = h('a', { class: 'button', download: `${name}-tradeoff.csv`, href: '#', hidden: true }, 'Download tradeoff.csv');
+  const tradeoffPanel = h('div', { class: 'panel study-tradeoff', hidden: true },
+    h('h3', {}, 'Speed against accuracy'), tradeoffHint, tradeoffDownload, tradeoffPlots);
   replaceChildren(root,
     h('div', { class: 'view-title' }, title, h('a', { href: '#/studies' }, 'All studies'),
       h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'Its runs in the runs list')),
@@ -81,7 +89,7 @@ export function studyView(root, name) {
       h('table', { class: 'runs study-bands' },
         h('thead', {}, h('tr', {}, ['Value', 'Runs', 'Axial strain (%)', 'Mean', '95 % band'].map((t) => h('th', {}, t)))),
         bandTable)),
-    findingsPanel,
+    findingsPanel, tradeoffPanel,
     h('div', { class: 'panel' }, h('h3', {}, 'Runs'),
       h('table', { class: 'runs study-runs' }, h('thead', {}, h('tr', {}, ['#', 'Run', 'Values', 'Status'].map((t) => h('th', {}, t)))), runsBody)));
   quantitySelect.value = 'phi';
@@ -104,11 +112,15 @@ export function studyView(root, name) {
       showSummary(page);
       await loadBands();
       if (study.spec?.paper && !findings && !UNDER_WAY.has(study.status)) await loadFindings();
+      if (study.spec?.tradeoff) await loadTradeoff();
     } catch (error) {
       message.textContent = `The study cannot be loaded: ${error.message}`;
       message.hidden = false;
     }
-    if (!destroyed && (!study || UNDER_WAY.has(study.status))) timer = setTimeout(refresh, POLL_MS);
+    // A trade-off study whose references have all completed is done for a moment, until the
+    // server has queued its other settings: it is polled until its table is there.
+    const between = study?.spec?.tradeoff && !tradeoff && study.status === 'completed';
+    if (!destroyed && (!study || UNDER_WAY.has(study.status) || between)) timer = setTimeout(refresh, POLL_MS);
   }
 
   let findings = null;
@@ -134,6 +146,28 @@ export function studyView(root, name) {
     URL.revokeObjectURL(findingsDownload.href);
     findingsDownload.href = URL.createObjectURL(new Blob([findings.csv], { type: 'text/csv' }));
     findingsDownload.hidden = false;
+  }
+
+  let tradeoff = null;
+  async function loadTradeoff() {
+    tradeoffPanel.hidden = false;
+    if (tradeoff) return;
+    if (UNDER_WAY.has(study.status)) {
+      tradeoffHint.textContent = 'The plot is drawn once every run has ended: the references run first, then the settings that shear their specimens.';
+      return;
+    }
+    try {
+      tradeoff = await api.studyTradeoff(name);
+    } catch (error) {
+      tradeoffHint.textContent = `No trade-off table: ${error.message}`;
+      return;
+    }
+    if (destroyed) return;
+    tradeoffHint.textContent = `Each setting's shearing CPU time per run against its mean |angle difference| from the same seed's reference, the mean over ${tradeoff.seeds} seeds with its 95 % interval (${tradeoff.runs} runs, ${tradeoff.failed_runs} failed), as grainlab tradeoff --seeds ${tradeoff.seeds} judges them. Filled: on the Pareto front; dashed: the noise probe.`;
+    replaceChildren(tradeoffPlots, tradeoff.panels.map((p) => paretoPanelSvg(p)));
+    URL.revokeObjectURL(tradeoffDownload.href);
+    tradeoffDownload.href = URL.createObjectURL(new Blob([tradeoff.csv], { type: 'text/csv' }));
+    tradeoffDownload.hidden = false;
   }
 
   // Asks again only when the choice or the number of completed runs changed.
@@ -203,7 +237,7 @@ export function studyView(root, name) {
       h('td', {}, h('span', { class: `status ${run.status}`, title: run.error ?? '' }, run.status)))),
     page.total > page.runs.length ? h('tr', { class: 'more' }, h('td', { colspan: 4 },
       `The first ${page.runs.length} of ${page.total}: `, h('a', { href: `#/runs?study=${encodeURIComponent(name)}` }, 'all of them in the runs list'))) : null);
-    const paths = study.spec?.paper ? ['preset', 'seed'] : Object.keys(study.spec?.vary ?? {});
+    const paths = study.spec?.paper ? ['preset', 'seed'] : study.spec?.tradeoff ? ['setting', 'preset', 'seed'] : Object.keys(study.spec?.vary ?? {});
     if (pathSelect.options.length !== paths.length + 1) {
       replaceChildren(pathSelect, h('option', { value: '' }, '(all runs together)'), paths.map((p) => h('option', { value: p }, p)));
       // The first varied path that is not the seed: seeds are what an ensemble averages over.
