@@ -21,11 +21,13 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
-// The default comparison: clumps of 2, 3 and 5 discs, discs at three rolling frictions (the
-// calibration's bracket on the quick specimens) and plain discs.
+// The default comparison (docs/shape-fidelity.md): clumps of 2, 3 and 5 discs; discs at the
+// rolling frictions the calibration measured, and at the μ_r it interpolated on the quick
+// specimens (0.64); plain discs.
 std::vector<shapes::Representation> defaultRepresentations() {
   std::vector<shapes::Representation> reps;
-  for (const char* name : {"clumps-2", "clumps-3", "clumps-5", "rolling-0.1", "rolling-0.2", "rolling-0.4", "discs"})
+  for (const char* name : {"clumps-2", "clumps-3", "clumps-5", "rolling-0.1", "rolling-0.2", "rolling-0.4", "rolling-0.6",
+                           "rolling-0.8", "rolling-0.64", "discs"})
     reps.push_back(shapes::parseRepresentation(name));
   return reps;
 }
