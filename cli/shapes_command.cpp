@@ -55,8 +55,8 @@ int shapesCommand(const std::vector<std::string>& args) {
     const shapes::ShapeStudy study = shapes::runShapeStudy(opt, &std::cerr);
     const std::filesystem::path dir = opt.outDir;
     std::ofstream(dir / "shapes.svg") << tradeoff::renderParetoSvg(
-        study.panels, "CPU time per run, preparation included (s, log scale)",
-        "|bias| of peak φ_mob from the hexagons (°), 95% interval");
+        study.panels, "CPU s per run, preparation included (log scale)",
+        "|bias| of peak φ_mob (°), 95% interval");
     if (std::isfinite(study.calibration.rollingFriction))
       std::cout << "rolling friction matching the hexagons' mean peak phi_mob (random): " << std::setprecision(3)
                 << study.calibration.rollingFriction << " (between " << study.calibration.below << " and "
