@@ -236,7 +236,7 @@ ShapeStudy runShapeStudy(const ShapeStudyOptions& opt, std::ostream* progress) {
   const std::string size = opt.quick ? "quick" : "full";
   report::CsvTable table({"size", "assembly", "representation", "preset", "clump_discs", "rolling_friction", "quantity",
                           "tolerance", "seeds", "mean", "mean_ci_low", "mean_ci_high", "reference_seeds",
-                          "reference_mean", "bias", "bias_ci_low", "bias_ci_high", "welch_t", "sd", "verdict", "cpu_s",
+                          "reference_mean", "bias", "bias_ci_low", "bias_ci_high", "welch_t", "sd", "verdict", "runs_for_tolerance", "cpu_s",
                           "cpu_s_ci_low", "cpu_s_ci_high", "cost_ratio", "failed_runs"});
   for (const std::string& a : assemblies) {
     const std::vector<const RunRecord*> reference = ensemble(reps.front(), a);
@@ -259,7 +259,7 @@ ShapeStudy runShapeStudy(const ShapeStudyOptions& opt, std::ostream* progress) {
         table.addRow({size, a, r.name(), representationPreset(r, a, opt.quick), r.clumpDiscs,
                       r.shape == Shape::RollingDiscs ? r.rollingFriction : 0.0, qu.name, qu.tolerance, mean.n,
                       mean.mean, mean.low, mean.high, refMean.n, refMean.mean, e.bias, e.low, e.high, e.t,
-                      isReference ? mean.sd : e.sd, isReference ? std::string("reference") : e.verdict, cpu.mean, cpu.low,
+                      isReference ? mean.sd : e.sd, isReference ? std::string("reference") : e.verdict, e.runsForTolerance, cpu.mean, cpu.low,
                       cpu.high, cpu.mean / referenceCpu.mean, failedIn(runs)});
         if (q != 0) continue;  // the plot: peak φ_mob
         // |bias| with the interval's image under |·|: it holds |true bias| whenever the interval

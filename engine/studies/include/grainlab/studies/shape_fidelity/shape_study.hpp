@@ -10,7 +10,8 @@
 //
 // Each finished run leaves DIR/runs/<key>.json (its status, CPU seconds and values); a run
 // whose file is there is not run again, so the study can be run in pieces and resumed. Writes
-// DIR/shapes.csv (one row per assembly, representation and quantity), DIR/runs.csv,
+// DIR/shapes.csv (one row per assembly, representation and quantity, with the seeds per
+// ensemble its tolerance would need: runs_for_tolerance), DIR/runs.csv,
 // DIR/calibration.csv (the rolling discs' mean peak φ_mob per μ_r and the μ_r interpolated to
 // the hexagons' on the random assembly) and DIR/scenes/.
 #include <cstddef>
