@@ -295,7 +295,7 @@ export const SCENE_FIELDS = [
   {
     key: 'representation', label: 'Shape fidelity', kind: 'select', paths: (scene) => (scene.assembly ? ['assembly'] : []),
     options: [['custom', 'custom'], ...REPRESENTATIONS], display: sceneRepresentation, apply: applyRepresentation,
-    figures: shapeFidelityFigures, hint: 'the shape\'s cost and bias against the hexagons, measured by grainlab shapes',
+    figures: shapeFidelityFigures, hint: 'particle shape by what it costs and how far it moves the results from the hexagons\' (docs/shape-fidelity.md)',
   },
   {
     key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,
