@@ -9,7 +9,8 @@
 // not, run once per seed and are compared with both assemblies' hexagons.
 //
 // Each finished run leaves DIR/runs/<key>.json (its status, CPU seconds and values); a run
-// whose file is there is not run again, so the study can be run in pieces and resumed. Writes
+// whose file is there is not run again (a failed one neither: delete its file to retry), so the
+// study can be run in pieces and resumed. Writes
 // DIR/shapes.csv (one row per assembly, representation and quantity, with the seeds per
 // ensemble its tolerance would need: runs_for_tolerance), DIR/runs.csv,
 // DIR/calibration.csv (the rolling discs' mean peak φ_mob per μ_r and the μ_r interpolated to
