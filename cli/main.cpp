@@ -19,6 +19,7 @@
 #include "scene_keys_command.hpp"
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
+#include "shapes_command.hpp"
 #include "tradeoff_command.hpp"
 #ifdef GRAINLAB_HAS_SERVER
 #include "grainlab/server/import.hpp"
@@ -55,6 +56,9 @@ int usage(std::ostream& out, int code) {
          "  tradeoff --out DIR [--quick] [--jobs N]  speed against accuracy: tradeoff.csv, pareto.svg\n"         "      [--seeds N]              N seeds per setting, paired on specimens prepared once:\n"
          "                               each setting's bias with its 95% interval and a verdict\n"
          "      [--presets A,B] [--axes A,B]  other presets; only some axes (e.g. inertial_number)\n"
+         "  shapes --out DIR [--full] [--seeds N] [--jobs N] [--representations A,B] [--assemblies A,B]\n"
+         "                               shape fidelity: clumps-N, rolling-MU, discs against the hexagons,\n"
+         "                               N seeds each: shapes.csv, calibration.csv, shapes.svg (resumes)\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
@@ -178,6 +182,7 @@ int main(int argc, char** argv) {
     if (command == "bench") return grainlab::benchCommand(args);
     if (command == "paper") return grainlab::paperCommand(args);
     if (command == "tradeoff") return grainlab::tradeoffCommand(args);
+    if (command == "shapes") return grainlab::shapesCommand(args);
     if (command == "sweep") return grainlab::sweepCommand(args);
 #ifdef GRAINLAB_HAS_SERVER
     if (command == "serve") return serveCommand(args);

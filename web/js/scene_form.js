@@ -134,6 +134,101 @@ const hasAssembly = (scene) => Boolean(scene.assembly);
 const elongated = (scene) => scene.assembly?.shape === 'elongated' || scene.assembly?.shape === 'clump';
 
 /**
+ * Shape fidelity (docs/shape-fidelity.md): the representations `grainlab shapes` compared with
+ * the paper's hexagons, each with its measured cost and bias from web/tables/shape-fidelity.json
+ * (generated from the study's table by scripts/shape-fidelity-json). Choosing one rewrites
+ * the assembly (keeping its size, and its orientation where the shape has one) and the
+ * rolling friction.
+ */
+let shapeFidelity = null;
+/** The table the dashboard serves (null: not loaded; the field then shows no figures). */
+export function useShapeFidelityTable(table) {
+  shapeFidelity = table;
+}
+const HEXAGON_LENGTH_OVER_WIDTH = Math.sqrt(3);  // the presets' clumps: the hexagons' length over width
+export const REPRESENTATIONS = [
+  ['hexagons', 'hexagons (the reference)'], ['clumps-2', 'clumps of 2 discs'], ['clumps-3', 'clumps of 3 discs'],
+  ['clumps-5', 'clumps of 5 discs'], ['rolling', 'discs with rolling resistance'], ['discs', 'discs'],
+];
+/** The scene's representation: one of REPRESENTATIONS' keys, or 'custom'. */
+export function sceneRepresentation(scene) {
+  const a = scene.assembly;
+  if (!a) return 'custom';
+  if (a.shape === 'elongated') return (a.vertices ?? 6) === 6 && (a.aspect_ratio ?? 1.5) === 1.5 ? 'hexagons' : 'custom';
+  if (a.shape === 'clump') {
+    const name = `clumps-${a.clump_discs ?? 3}`;
+    return REPRESENTATIONS.some(([key]) => key === name) ? name : 'custom';
+  }
+  return (scene.material?.rolling_friction ?? 0) > 0 ? 'rolling' : 'discs';
+}
+function applyRepresentation(scene, name) {
+  const old = scene.assembly;
+  if (!old || !REPRESENTATIONS.some(([key]) => key === name) || sceneRepresentation(scene) === name) return;
+  const size = { specimen_diameter: old.specimen_diameter };
+  const orientation = old.orientation === 'bedding'
+    ? { orientation: 'bedding', bedding_angle_deg: old.bedding_angle_deg }
+    : { orientation: 'random' };
+  const material = scene.material ?? (scene.material = {});
+  delete material.rolling_friction;
+  delete material.rolling_damping;
+  if (name === 'hexagons') {
+    scene.assembly = { shape: 'elongated', aspect_ratio: 1.5, vertices: 6, ...orientation, ...size };
+  } else if (name.startsWith('clumps-')) {
+    scene.assembly = {
+      shape: 'clump', clump_discs: Number(name.slice(7)), aspect_ratio: HEXAGON_LENGTH_OVER_WIDTH, ...orientation, ...size,
+    };
+  } else {
+    scene.assembly = { shape: 'disc', disc_radius: 0.002, ...size };
+    if (name === 'rolling') {
+      // The measured μ_r nearest the calibrated one (the preset's 0.1 without a table), with the
+      // presets' damper.
+      const offered = shapeFidelity?.rolling_representation;
+      material.rolling_friction = offered ? Number(offered.slice('rolling-'.length)) : 0.1;
+      material.rolling_damping = 0.3;
+    }
+  }
+}
+// What the dashboard shows of each representation: the quantity, its label, its unit's decimals.
+export const SHAPE_FIDELITY_QUANTITIES = [
+  ['peak_phi_mob_deg', 'peak φ_mob', 1, '°'], ['void_ratio_consolidated', 'void ratio after consolidation', 3, ''],
+  ['a_c_5', 'a_c at 5% strain', 3, ''], ['theta_sigma_5_deg', 'θσ at 5% strain', 1, '°'], ['omega_5_deg', 'ω at 5% strain', 1, '°'],
+];
+const signed = (value, decimals) => `${value > 0 ? '+' : value < 0 ? '−' : ''}${Math.abs(value).toFixed(decimals)}`;
+const plain = (value, decimals) => `${value < 0 ? '−' : ''}${Math.abs(value).toFixed(decimals)}`;
+/**
+ * The measured cost and bias of the scene's representation, from the loaded table: null when
+ * there is no table or no measurement for it (rolling discs at a μ_r the study did not run).
+ * The assembly is the bedding-30 one when the scene is bedded, else the random one; discs have
+ * no orientation, so theirs are against the random assembly's hexagons.
+ */
+export function shapeFidelityFigures(scene) {
+  const name = sceneRepresentation(scene);
+  if (!shapeFidelity || name === 'custom') return null;
+  const assembly = scene.assembly?.orientation === 'bedding' ? 'bedding-30' : 'random';
+  // Rolling discs: the figures of the ensemble at the scene's own μ_r, if there is one.
+  const key = name === 'rolling' ? `rolling-${scene.material.rolling_friction}` : name;
+  const measured = shapeFidelity.assemblies?.[assembly]?.[key];
+  if (!measured) return null;
+  const rows = SHAPE_FIDELITY_QUANTITIES.map(([quantity, label, decimals, unit]) => {
+    const q = measured.quantities[quantity];
+    if (!q) return null;
+    const text = name === 'hexagons' || q.bias === null
+      ? `${plain(q.mean, decimals)}${unit} (${plain(q.mean_ci_low, decimals)} to ${plain(q.mean_ci_high, decimals)})`
+      : `${signed(q.bias, decimals)}${unit} (${plain(q.bias_ci_low, decimals)} to ${plain(q.bias_ci_high, decimals)})`;
+    return { quantity, label, text };
+  }).filter(Boolean);
+  const rolling = name === 'rolling' ? `, μᵣ = ${measured.rolling_friction}` : '';
+  return {
+    heading: `Measured by grainlab shapes (${shapeFidelity.size} specimens, ${measured.seeds} seeds, ${assembly} assembly${rolling}): ` +
+      (name === 'hexagons'
+        ? `${measured.cpu_s.toFixed(1)} CPU s per run; the reference's means, 95% interval:`
+        : `cost ${measured.cost_ratio.toFixed(2)}× the hexagons' per run; bias against them, 95% interval:`),
+    cost: measured.cost_ratio,
+    rows,
+  };
+}
+
+/**
  * kind: number | integer | text | select. factor: scene value = shown value × factor.
  * visible(scene): whether the scene has the part the field edits. fallback: what a select
  * shows when the key is absent (the engine's default).
@@ -197,6 +292,11 @@ export const SCENE_FIELDS = [
   { key: 'normal_stress', label: 'Normal stress σ₂₂ held', unit: 'kPa', kind: 'number', factor: 1e3, paths: stagePaths(['simple_shear'], 'normal_stress') },
   { key: 'target_shear_strain', label: 'Final shear strain γ', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['simple_shear'], 'target_shear_strain') },
   { section: 'Specimen' },
+  {
+    key: 'representation', label: 'Shape fidelity', kind: 'select', paths: (scene) => (scene.assembly ? ['assembly'] : []),
+    options: [['custom', 'custom'], ...REPRESENTATIONS], display: sceneRepresentation, apply: applyRepresentation,
+    figures: shapeFidelityFigures, hint: 'particle shape by what it costs and how far it moves the results from the hexagons\' (docs/shape-fidelity.md)',
+  },
   {
     key: 'shape', label: 'Particle shape', kind: 'select', paths: fixed('assembly.shape'), visible: hasAssembly,
     options: [['disc', 'circular discs'], ['elongated', 'elongated polygons'], ['clump', 'clumps of discs in a line']], fallback: 'disc',

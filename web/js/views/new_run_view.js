@@ -8,7 +8,7 @@
 import { api } from '../api.js';
 import { h, replaceChildren } from '../dom.js';
 import {
-  SCENE_FIELDS, applyValue, describeScene, displayValue, fieldForPath, fieldVisible,
+  SCENE_FIELDS, applyValue, describeScene, displayValue, fieldForPath, fieldVisible, useShapeFidelityTable,
 } from '../scene_form.js';
 
 const DEFAULT_PRESET = 'circular-quick';
@@ -63,9 +63,11 @@ export function newRunView(root, params) {
         });
       input.addEventListener(field.kind === 'select' ? 'change' : 'input', () => fieldEdited(field));
       const error = h('div', { class: 'field-error', dataset: { errorFor: field.key } });
-      const box = h('div', { class: 'field-input' }, input, field.hint ? h('div', { class: 'hint' }, field.hint) : null, error);
+      // A field with measured figures (shape fidelity) shows them under its hint.
+      const figures = field.figures ? h('div', { class: 'hint figures', dataset: { figuresFor: field.key } }) : null;
+      const box = h('div', { class: 'field-input' }, input, field.hint ? h('div', { class: 'hint' }, field.hint) : null, figures, error);
       const label = h('label', { for: id }, field.label, field.unit ? h('span', { class: 'unit' }, ` (${field.unit})`) : null);
-      inputs.set(field.key, { label, box, input, error });
+      inputs.set(field.key, { label, box, input, error, figures });
       children.push(label, box);
     }
     replaceChildren(grid, children);
@@ -91,12 +93,20 @@ export function newRunView(root, params) {
       label.hidden = !visible;
       box.hidden = !visible;
       if (visible && document.activeElement !== input) input.value = displayValue(field, scene);
+      if (field.figures) showFigures(inputs.get(field.key).figures, visible ? field.figures(scene) : null);
     }
     for (const section of grid.querySelectorAll('.form-section')) {
       const fields = SCENE_FIELDS.slice(SCENE_FIELDS.findIndex((f) => f.section === section.dataset.section) + 1);
       const end = fields.findIndex((f) => f.section);
       section.hidden = !(end < 0 ? fields : fields.slice(0, end)).some(shown);
     }
+  }
+
+  function showFigures(box, figures) {
+    box.hidden = !figures;
+    if (!figures) return;
+    replaceChildren(box, h('div', {}, figures.heading), ...figures.rows.map(({ quantity, label, text }) =>
+      h('div', { dataset: { quantity } }, `${label}: `, h('span', { class: 'figure' }, text))));
   }
 
   function showJson() {
@@ -231,6 +241,12 @@ export function newRunView(root, params) {
   }
 
   buildFields();
+  // The measured shape-fidelity table (a static file): the form works without it.
+  fetch('tables/shape-fidelity.json').then((r) => (r.ok ? r.json() : null)).then((table) => {
+    if (destroyed || !table) return;
+    useShapeFidelityTable(table);
+    if (scene) fillForm();
+  }).catch(() => {});
   if (fromId !== null) loadSpecimen();
   else (async () => {
     try {

@@ -21,6 +21,10 @@ constexpr int kLeft = 62, kRight = 18, kTop = 34, kBottom = 78;  // px of margin
 size_t axisIndex(const std::string& axis) {
   static const std::vector<std::string> order{"reference", "noise", "baseline", "timestep_safety", "inertial_number",
                                               "vertices", "sample_strain", "engine", "box2d"};
+  // grainlab shapes' representations never share a panel with the axes: the colours after the reference's.
+  static const std::vector<std::string> shapes{"clumps", "rolling discs", "discs"};
+  if (const auto s = std::find(shapes.begin(), shapes.end(), axis); s != shapes.end())
+    return 1 + static_cast<size_t>(s - shapes.begin());
   const auto it = std::find(order.begin(), order.end(), axis);
   return static_cast<size_t>(it - order.begin());
 }
