@@ -162,16 +162,20 @@ json demoPile() {
 // ring's compaction backstop; the cell has no ring to stop at a void ratio) at a cap of
 // 0.25 /s, where the inertial number at 3 kPa stays below 1e-3, consolidated to 300 kPa with
 // friction, then sheared at constant σ11 as in the ring.
-json periodicScene(const std::string& name, const std::string& kind, bool quick) {
-  json scene = paperScene(name, kind, quick);
+// A path other than "biaxial" replaces the shearing as the ring's path presets do.
+json periodicScene(const std::string& name, const std::string& path, const std::string& kind, bool quick) {
+  json scene = path == "biaxial" ? paperScene(name, kind, quick) : pathScene(name, path, kind, quick);
   scene["boundary"] = {{"type", "periodic"}};
   scene["stages"][0] = {{"type", "isotropic"}, {"name", "compaction"}, {"pressure", 3e3}, {"strain_rate", 0.25},
                         {"friction", 0.0}, {"max_time", 4.0}};
   return scene;
 }
 
-const std::vector<std::pair<std::string, std::string>>& periodicPresets() {
-  static const std::vector<std::pair<std::string, std::string>> presets{{"periodic-biaxial-circular", "circular"}};
+const std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& periodicPresets() {
+  static const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> presets{
+      {"periodic-biaxial-circular", {"biaxial", "circular"}},
+      {"periodic-biaxial-elongated-bedding-30", {"biaxial", "30"}},
+      {"periodic-simple-shear-circular", {"simple-shear", "circular"}}};
   return presets;
 }
 
@@ -209,9 +213,9 @@ json presetScene(const std::string& name) {
     if (name == preset) return pathScene(name, what.first, what.second, false);
     if (name == preset + "-quick") return pathScene(name, what.first, what.second, true);
   }
-  for (const auto& [preset, kind] : periodicPresets()) {
-    if (name == preset) return periodicScene(name, kind, false);
-    if (name == preset + "-quick") return periodicScene(name, kind, true);
+  for (const auto& [preset, what] : periodicPresets()) {
+    if (name == preset) return periodicScene(name, what.first, what.second, false);
+    if (name == preset + "-quick") return periodicScene(name, what.first, what.second, true);
   }
   if (name == "circular-rolling" || name == "circular-rolling-quick") return rollingScene(name, name.ends_with("-quick"));
   if (name == "demo-pile") return demoPile();
