@@ -22,7 +22,9 @@ RunContext::RunContext(const Scene& scene) : scene_(scene), monitor_(scene) {
   }
   world_ = std::make_unique<World>(scene.material, settings);
   for (const ParticleSpec& p : scene.particles) world_->addParticle(p);
-  if (scene.assembly) {
+  if (scene.boundary.type == BoundarySpec::Type::Periodic) {
+    buildCell(scene);
+  } else if (scene.assembly) {
     const Specimen specimen = generateSpecimen(*scene.assembly, scene.seed);
     const bool membrane = scene.boundary.type == BoundarySpec::Type::Membrane;
     for (const ParticleSpec& p : specimen.particles) {
@@ -41,11 +43,34 @@ RunContext::RunContext(const Scene& scene) : scene_(scene), monitor_(scene) {
     if (scene.solver.timestep > 0) throw SceneError("solver.timestep", e.what());
     throw;
   }
-  if (scene.boundary.type == BoundarySpec::Type::Membrane) membrane_ = std::make_unique<Membrane>(*world_);
-  sampler_ = std::make_unique<Sampler>(scene.output, *world_, membrane_.get());
+  if (scene.boundary.type == BoundarySpec::Type::Membrane) {
+    membrane_ = std::make_unique<Membrane>(*world_);
+    sampled_ = sampleMembrane(*membrane_);
+  }
+  if (world_->periodicCell()) sampled_ = sampleCell(*world_);
+  sampler_ = std::make_unique<Sampler>(scene.output, *world_, sampled_.get());
 }
 
 RunContext::~RunContext() = default;
+
+void RunContext::buildCell(const Scene& scene) {
+  Eigen::Matrix2d h = Eigen::Matrix2d::Zero();
+  std::vector<ParticleSpec> particles;
+  if (scene.assembly) {
+    CellSpecimen specimen = generateCellSpecimen(*scene.assembly, scene.seed);
+    h = specimen.edges;
+    particles = std::move(specimen.particles);
+  } else {
+    h(0, 0) = scene.boundary.cellSize->x();
+    h(1, 1) = scene.boundary.cellSize->y();
+  }
+  try {
+    world_->setPeriodicCell(h);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(scene.assembly ? "boundary.type" : "boundary.size", e.what());
+  }
+  for (const ParticleSpec& p : particles) world_->addParticle(p);
+}
 
 double RunContext::totalWork() const {
   double work = 0;
@@ -60,10 +85,15 @@ Stage& RunContext::beginStage(size_t index) {
   if (spec.type == StageSpec::Type::Isotropic || isShearing(spec.type)) {
     sampler_->resetStrainReference();
   }
-  stage_ = makeStage(spec, scene_.output, *world_, membrane_.get());
+  stage_ = newStage(spec);
   stageStartSample_ = true;
   nextSample_ = stage_->sampleCoordinate() + stage_->sampleSpacing();
   return *stage_;
+}
+
+std::unique_ptr<Stage> RunContext::newStage(const StageSpec& spec) {
+  if (world_->periodicCell()) return makeCellStage(spec, scene_.output, *world_, scene_.boundary.rateCap);
+  return makeStage(spec, scene_.output, *world_, membrane_.get());
 }
 
 void RunContext::endStage() {
@@ -71,6 +101,7 @@ void RunContext::endStage() {
     voidRatioAfterConsolidation_ = sampler_->lastVoidRatio();
   }
   if (membrane_) membrane_->setStrainRates(0, 0);
+  if (world_->periodicCell()) world_->setCellVelocityGradient(Eigen::Matrix2d::Zero());
 }
 
 void RunContext::persist(StateArchive& a) {
@@ -90,7 +121,7 @@ void RunContext::persist(StateArchive& a) {
     // As beginStage, without what it resets: friction, strain references and the next
     // sample come from the checkpoint.
     stageIndex_ = static_cast<size_t>(stage);
-    stage_ = makeStage(scene_.stages[stageIndex_], scene_.output, *world_, membrane_.get());
+    stage_ = newStage(scene_.stages[stageIndex_]);
   }
   a.section("stage");
   stage_->persist(a);
@@ -102,7 +133,7 @@ void RunContext::sample(RunObserver& observer) {
   if (world_->stepCount() == lastSampleStep_) return;  // a stage's end may coincide with a sample
   lastSampleStep_ = world_->stepCount();
   world_->checkHealth();  // a diverged state never reaches the results
-  const double rate = membrane_ ? membrane_->rateMagnitude() : 0.0;
+  const double rate = sampled_ ? sampled_->rateMagnitude() : 0.0;
   lastSampleRate_ = rate;
   const auto t0 = std::chrono::steady_clock::now();
   const Sample s = sampler_->measure(static_cast<int>(stageIndex_), scene_.stages[stageIndex_], rate);

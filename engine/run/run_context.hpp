@@ -9,6 +9,7 @@
 #include "grainlab/scene.hpp"
 #include "grainlab/stage.hpp"
 #include "grainlab/world.hpp"
+#include "sampled_boundary.hpp"
 #include "sampler.hpp"
 #include "validity_monitor.hpp"
 
@@ -51,9 +52,14 @@ class RunContext {
   void sampleSpecimen(RunObserver& observer);
 
  private:
+  // A periodic scene's cell and particles (the assembly's cell specimen, or explicit ones).
+  void buildCell(const Scene& scene);
+  std::unique_ptr<Stage> newStage(const StageSpec& spec);
+
   const Scene& scene_;
   std::unique_ptr<World> world_;
   std::unique_ptr<Membrane> membrane_;
+  std::unique_ptr<SampledBoundary> sampled_;  // what the sampler reads: the ring or the cell
   std::unique_ptr<Sampler> sampler_;
   std::unique_ptr<Stage> stage_;
   ValidityMonitor monitor_;

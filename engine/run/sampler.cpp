@@ -6,7 +6,7 @@
 #include "grainlab/analysis/angles.hpp"
 #include "grainlab/analysis/fabric.hpp"
 #include "grainlab/analysis/stress_direction.hpp"
-#include "grainlab/membrane.hpp"
+#include "sampled_boundary.hpp"
 #include "grainlab/stress.hpp"
 #include "grainlab/world.hpp"
 
@@ -29,11 +29,11 @@ double strainRateDirectionDeg(const Eigen::Matrix2d& l) {
 
 }  // namespace
 
-Sampler::Sampler(const OutputSpec& output, const World& world, const Membrane* membrane)
-    : output_(output), world_(world), membrane_(membrane) {
+Sampler::Sampler(const OutputSpec& output, const World& world, const SampledBoundary* boundary)
+    : output_(output), world_(world), boundary_(boundary) {
   histograms_.bins = output.histogramBins;
-  if (membrane_) {
-    inside_ = membrane_->inside();
+  if (boundary_) {
+    inside_ = boundary_->inside();
   } else {
     inside_.assign(static_cast<size_t>(world.size()), 1);
     for (int k = 0; k < world.size(); ++k) inside_[k] = world.boundaryFlags()[k] ? 0 : 1;
@@ -50,10 +50,10 @@ Sampler::Sampler(const OutputSpec& output, const World& world, const Membrane* m
 }
 
 void Sampler::resetStrainReference() {
-  if (!membrane_) return;
-  stretch1Ref_ = membrane_->stretch1();
-  stretch2Ref_ = membrane_->stretch2();
-  areaRef_ = membrane_->enclosedArea();
+  if (!boundary_) return;
+  stretch1Ref_ = boundary_->stretch1();
+  stretch2Ref_ = boundary_->stretch2();
+  areaRef_ = boundary_->area();
 }
 
 Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRate) {
@@ -101,16 +101,17 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
   v[cContacts] = static_cast<double>(contacts);
   if (specimen) v[cCoord] = static_cast<double>(ends) / specimen;
 
-  if (membrane_) {
-    const double area = membrane_->enclosedArea();
+  if (boundary_) {
+    const PeriodicCell* cell = boundary_->cell();
+    const double area = boundary_->area();
     v[cArea] = area;
-    v[cAxial] = 1 - membrane_->stretch2() / stretch2Ref_;
-    v[cLateral] = 1 - membrane_->stretch1() / stretch1Ref_;
+    v[cAxial] = 1 - boundary_->stretch2() / stretch2Ref_;
+    v[cLateral] = 1 - boundary_->stretch1() / stretch1Ref_;
     v[cVol] = 1 - area / areaRef_;
-    lastVoidRatio_ = (area - membrane_->solidArea()) / membrane_->solidArea();
+    lastVoidRatio_ = (area - boundary_->solidArea()) / boundary_->solidArea();
     v[cVoid] = lastVoidRatio_;
-    v[cThEps] = strainRateDirectionDeg(membrane_->measuredVelocityGradient());
-    const StressTensor stress = contactStress(contacts_, world_.positions(), inside_, area);
+    v[cThEps] = strainRateDirectionDeg(boundary_->velocityGradient());
+    const StressTensor stress = contactStress(contacts_, world_.positions(), inside_, area, cell);
     v[c11] = stress.s11;
     v[c22] = stress.s22;
     v[c12] = stress.s12;
@@ -125,7 +126,7 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
       v[cInertial] = std::abs(strainRate) * meanDiameter_ * std::sqrt(world_.material().density / stress.p());
     }
     if (output_.fabric && contacts > 0) {
-      const analysis::FabricState f = analysis::measureFabric(contacts_, world_.positions(), inside_);
+      const analysis::FabricState f = analysis::measureFabric(contacts_, world_.positions(), inside_, cell);
       v[cAc] = f.a_c;
       v[cThc] = f.theta_c_deg;
       v[cAn] = f.a_n;
@@ -153,7 +154,7 @@ Sample Sampler::measure(int stageIndex, const StageSpec& stage, double strainRat
       }
     }
     if (output_.histograms && contacts > 0) {
-      analysis::measureHistograms(contacts_, world_.positions(), inside_, histograms_);
+      analysis::measureHistograms(contacts_, world_.positions(), inside_, histograms_, cell);
       s.histograms = &histograms_;
     }
   }

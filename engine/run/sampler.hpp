@@ -1,5 +1,6 @@
 #pragma once
-// Turns the world's state into one series row: strains and stresses from the membrane,
+// Turns the world's state into one series row: strains and stresses from the boundary (the
+// membrane ring or the periodic cell, through SampledBoundary),
 // packing measures, and (if the scene asks) the fabric and the principal stress directions.
 // It reads the world and never changes it.
 #include <memory>
@@ -15,13 +16,14 @@
 namespace grainlab {
 
 class World;
-class Membrane;
+class SampledBoundary;
 
 class Sampler {
  public:
-  Sampler(const OutputSpec& output, const World& world, const Membrane* membrane);
+  /// `boundary` null: no stresses or strains (a scene without a boundary).
+  Sampler(const OutputSpec& output, const World& world, const SampledBoundary* boundary);
 
-  /// Strains are measured from the ring's state at the last call (the start of shearing).
+  /// Strains are measured from the boundary's state at the last call (the start of shearing).
   void resetStrainReference();
   /// The row for the world's current state; `stageIndex` and `stage` label it. The peak of
   /// φ_mob is taken over shearing samples only (during compaction σ3 ≈ 0 makes it ~90°).
@@ -42,7 +44,7 @@ class Sampler {
  private:
   OutputSpec output_;
   const World& world_;
-  const Membrane* membrane_;
+  const SampledBoundary* boundary_;
   std::vector<unsigned char> inside_;
   std::vector<ContactRecord> contacts_;
   analysis::PolarHistograms histograms_;

@@ -157,6 +157,28 @@ json demoPile() {
           {"output", {{"sample_interval", 0.01}}}};
 }
 
+// The paper's assembly and stages in a periodic cell (docs/periodic-cell.md): the same recipe
+// placed in a square cell, compacted without friction by the isotropic servos to 3 kPa (the
+// ring's compaction backstop; the cell has no ring to stop at a void ratio) at a cap of
+// 0.25 /s, where the inertial number at 3 kPa stays below 1e-3, consolidated to 300 kPa with
+// friction, then sheared at constant σ11 as in the ring.
+// A path other than "biaxial" replaces the shearing as the ring's path presets do.
+json periodicScene(const std::string& name, const std::string& path, const std::string& kind, bool quick) {
+  json scene = path == "biaxial" ? paperScene(name, kind, quick) : pathScene(name, path, kind, quick);
+  scene["boundary"] = {{"type", "periodic"}};
+  scene["stages"][0] = {{"type", "isotropic"}, {"name", "compaction"}, {"pressure", 3e3}, {"strain_rate", 0.25},
+                        {"friction", 0.0}, {"max_time", 4.0}};
+  return scene;
+}
+
+const std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& periodicPresets() {
+  static const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> presets{
+      {"periodic-biaxial-circular", {"biaxial", "circular"}},
+      {"periodic-biaxial-elongated-bedding-30", {"biaxial", "30"}},
+      {"periodic-simple-shear-circular", {"simple-shear", "circular"}}};
+  return presets;
+}
+
 const std::vector<std::pair<std::string, std::string>>& paperPresets() {
   static const std::vector<std::pair<std::string, std::string>> presets{
       {"circular", "circular"},           {"elongated-random", "random"},
@@ -174,6 +196,8 @@ std::vector<std::string> presetNames() {
   for (const auto& p : paperPresets()) names.push_back(p.first + "-quick");
   for (const auto& p : pathPresets()) names.push_back(p.first);
   for (const auto& p : pathPresets()) names.push_back(p.first + "-quick");
+  for (const auto& p : periodicPresets()) names.push_back(p.first);
+  for (const auto& p : periodicPresets()) names.push_back(p.first + "-quick");
   names.push_back("circular-rolling");
   names.push_back("circular-rolling-quick");
   names.push_back("demo-pile");
@@ -188,6 +212,10 @@ json presetScene(const std::string& name) {
   for (const auto& [preset, what] : pathPresets()) {
     if (name == preset) return pathScene(name, what.first, what.second, false);
     if (name == preset + "-quick") return pathScene(name, what.first, what.second, true);
+  }
+  for (const auto& [preset, what] : periodicPresets()) {
+    if (name == preset) return periodicScene(name, what.first, what.second, false);
+    if (name == preset + "-quick") return periodicScene(name, what.first, what.second, true);
   }
   if (name == "circular-rolling" || name == "circular-rolling-quick") return rollingScene(name, name.ends_with("-quick"));
   if (name == "demo-pile") return demoPile();

@@ -322,6 +322,37 @@ void refuseClumpsWhereTheyCannotRun(const Scene& scene) {
   }
 }
 
+// A periodic cell (docs/periodic-cell.md) holds discs and polygons that all meet each other
+// through its images: the contact loop across its edges has no walls or clumps yet, and its
+// size comes either from the assembly or from boundary.size, not both.
+void refuseWhatACellCannotHold(const Scene& scene) {
+  if (!scene.walls.empty()) throw SceneError("walls", "a periodic cell has no walls (remove them or use another boundary)");
+  for (size_t k = 0; k < scene.particles.size(); ++k) {
+    if (scene.particles[k].shape == ShapeKind::Clump) {
+      throw SceneError("particles[" + std::to_string(k) + "].shape", "a periodic cell holds discs and polygons, not clumps");
+    }
+  }
+  if (scene.assembly && scene.assembly->shape == SpecimenRecipe::Shape::Clump) {
+    throw SceneError("assembly.shape", "a periodic cell holds discs and polygons, not clumps");
+  }
+  if (scene.assembly && scene.boundary.cellSize) {
+    throw SceneError("boundary.size", "the assembly sizes the cell: give boundary.size only for explicit particles");
+  }
+  if (!scene.assembly && !scene.boundary.cellSize) {
+    throw SceneError("boundary.size", "a periodic cell of explicit particles needs its size [width, height] in m");
+  }
+  if (scene.gravity != Vec2::Zero()) throw SceneError("gravity", "a periodic cell has no gravity (it tiles the plane)");
+}
+
+// The cell's loading paths (periodic_stages.hpp): the membrane's isotropic, biaxial and
+// simple_shear in the cell; the others are the ring's only.
+void refuseStageACellCannotRun(const StageSpec& s, const std::string& path) {
+  using T = StageSpec::Type;
+  if (s.type == T::Free || s.type == T::Isotropic || s.type == T::Biaxial || s.type == T::SimpleShear) return;
+  throw SceneError(path + ".type", "a periodic cell runs free, isotropic, biaxial and simple_shear stages, not " +
+                                       std::string(toString(s.type)));
+}
+
 }  // namespace
 
 Scene parseScene(const nlohmann::json& json) {
@@ -354,10 +385,23 @@ Scene parseScene(const nlohmann::json& json) {
   const nlohmann::json& boundary = r.raw("boundary");
   if (!boundary.is_null()) {
     JsonReader b(boundary, "boundary");
-    const std::string type = b.choice("type", "none", {"none", "membrane"});
-    scene.boundary.type = type == "membrane" ? BoundarySpec::Type::Membrane : BoundarySpec::Type::None;
+    const std::string type = b.choice("type", "none", {"none", "membrane", "periodic"});
+    scene.boundary.type = type == "membrane"   ? BoundarySpec::Type::Membrane
+                          : type == "periodic" ? BoundarySpec::Type::Periodic
+                                               : BoundarySpec::Type::None;
+    if (scene.boundary.type == BoundarySpec::Type::Periodic) {
+      if (b.has("size")) {
+        const Vec2 size = b.vec2("size", Vec2::Zero());
+        if (!(size.x() > 0) || !(size.y() > 0) || !size.allFinite()) {
+          throw SceneError(b.fieldPath("size"), "the cell's width and height must be positive and finite");
+        }
+        scene.boundary.cellSize = size;
+      }
+      scene.boundary.rateCap = b.number("rate_cap", scene.boundary.rateCap, 0, kInf, true);
+    }
     b.finish();
   }
+  if (scene.boundary.type == BoundarySpec::Type::Periodic) refuseWhatACellCannotHold(scene);
   if (scene.boundary.type == BoundarySpec::Type::Membrane && !scene.assembly) {
     throw SceneError("boundary.type", "a membrane boundary is generated with the assembly: give an assembly");
   }
@@ -368,7 +412,8 @@ Scene parseScene(const nlohmann::json& json) {
     for (size_t k = 0; k < stages.size(); ++k) {
       const std::string path = "stages[" + std::to_string(k) + "]";
       StageSpec s = parseStage(stages[k], path);
-      if (s.type != StageSpec::Type::Free && scene.boundary.type != BoundarySpec::Type::Membrane) {
+      if (scene.boundary.type == BoundarySpec::Type::Periodic) refuseStageACellCannotRun(s, path);
+      else if (s.type != StageSpec::Type::Free && scene.boundary.type != BoundarySpec::Type::Membrane) {
         throw SceneError(path + ".type", "a " + s.name + " stage loads through the boundary ring: set boundary.type to \"membrane\"");
       }
       scene.stages.push_back(s);
@@ -381,6 +426,9 @@ Scene parseScene(const nlohmann::json& json) {
     scene.stages.push_back(free);
   }
   scene.solver = parseSolver(r.raw("solver"));
+  if (scene.boundary.type == BoundarySpec::Type::Periodic && scene.solver.engine == SolverSpec::Engine::Box2d) {
+    throw SceneError("boundary.type", "the box2d engine has no periodic cell (use solver.engine \"dem\")");
+  }
   refuseClumpsWhereTheyCannotRun(scene);
   scene.output = parseOutput(r.raw("output"));
   scene.startFrom = parseStartFrom(r.raw("start_from"));

@@ -176,6 +176,9 @@ std::vector<std::pair<std::string, json>> sceneKeyExemplars() {
                                                        {"members", json::array({{{"position", {-0.0008, 0}}, {"radius", 0.001}},
                                                                                 {{"position", {0.0008, 0}}, {"radius", 0.001}}})},
                                                        {"position", {0, 0.002}}}})}});
+  scenes.emplace_back("explicit discs in a periodic cell of a given size",
+                      json{{"particles", json::array({{{"radius", 0.001}, {"position", {0.002, 0.002}}}})},
+                           {"boundary", {{"type", "periodic"}, {"size", {0.01, 0.01}}, {"rate_cap", 1.0}}}});
   scenes.emplace_back("clump assembly",
                       json{{"assembly", {{"shape", "clump"}, {"clump_discs", 3}, {"aspect_ratio", 1.732}}},
                            {"boundary", {{"type", "membrane"}}}});

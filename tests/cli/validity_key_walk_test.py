@@ -62,6 +62,8 @@ def base_scene(key, stage_type):
     if path.startswith("particles[]") or path.startswith("walls[]"):
         return preset("demo-pile"), path.replace("[]", "[0]")
     scene = preset("circular-quick")
+    if path.startswith("boundary."):
+        scene = preset("periodic-biaxial-circular-quick")
     if path in ("solver.velocity_iterations", "solver.position_iterations"):
         scene["solver"]["engine"] = "box2d"
     if path in ("assembly.aspect_ratio", "assembly.vertices", "assembly.bedding_angle_deg"):

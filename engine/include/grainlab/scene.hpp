@@ -73,8 +73,16 @@ std::optional<StageSpec::Type> parseStageType(std::string_view name);
 std::span<const StageSpec::Type> stageTypes();
 
 struct BoundarySpec {
-  enum class Type { None, Membrane };
+  /// None; the paper's ring of boundary particles; or a periodic cell (docs/periodic-cell.md).
+  enum class Type { None, Membrane, Periodic };
   Type type = Type::None;
+  /// periodic: the rectangular cell's width and height, m, for explicit particles; with an
+  /// assembly the cell is sized by the specimen's placement (generateCellSpecimen).
+  std::optional<Vec2> cellSize;
+  /// periodic: the largest strain rate a stress servo of the cell may command in biaxial and
+  /// simple_shear stages, 1/s: at 3 /s a 4 mm disc at 300 kPa has an inertial number of 1e-3
+  /// (docs/periodic-cell.md), and the servo keeps up with dilation at shearing rates of 1 /s.
+  double rateCap = 3;
 };
 
 /// The solver: grainlab's DEM ("solver.engine": "dem") or Box2D's rigid-body solver ("box2d",
