@@ -25,6 +25,7 @@ edit() {  # PYTHON_STATEMENT_ON_s > FILE
   python3 -c "import json, sys; s = json.load(open('$work/packing.json')); $1; json.dump(s, sys.stdout)"
 }
 refused "membrane ring" --preset circular-quick
+refused "periodic cell" --preset periodic-biaxial-circular-quick
 refused "polygon particles" <(edit 's["particles"][0] = {"shape": "polygon", "vertices": [[-1e-3, -1e-3], [1e-3, -1e-3], [0, 1e-3]], "position": s["particles"][0]["position"]}')
 refused "local_damping" --preset demo-pile
 refused "rolling_friction" <(edit 's["material"]["rolling_friction"] = 0.1')

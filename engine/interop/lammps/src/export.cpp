@@ -51,6 +51,10 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
   if (scene.boundary.type == BoundarySpec::Type::Membrane || boundary > 0)
     throw ExportRefused("the membrane ring and its pressure servo (boundary.type \"membrane\", " +
                         std::to_string(boundary) + " ring particles) have no LAMMPS equivalent");
+  // The export's cell is the rectangle of four walls (--periodic); a scene's own cell, which
+  // may be tilted and is sized by its assembly, is not mapped to a LAMMPS box yet.
+  if (scene.boundary.type == BoundarySpec::Type::Periodic)
+    throw ExportRefused("a periodic cell (boundary.type \"periodic\"): give the discs four walls and --periodic");
   if (polygons > 0)
     throw ExportRefused(std::to_string(polygons) +
                         " polygon particles: pair_style gran/hooke/history has discs only");
