@@ -15,27 +15,10 @@
 #include "api_types.hpp"
 #include "repository.hpp"
 #include "run_service.hpp"
+#include "study_name.hpp"
 
 namespace grainlab::server {
 namespace {
-
-constexpr std::size_t kMaxNameLength = 64;
-
-// The study's name: its URL (/api/studies/NAME) and the prefix of its runs' names.
-std::string studyName(const nlohmann::ordered_json& spec) {
-  if (!spec.contains("name"))
-    throw ApiError(400, "a study launched on the server needs a name (letters, digits, '.', '-', '_')", "name");
-  if (!spec["name"].is_string()) throw ApiError(400, "must be a string", "name");
-  const std::string name = spec["name"].get<std::string>();
-  bool ok = !name.empty() && name.size() <= kMaxNameLength && std::isalnum(static_cast<unsigned char>(name[0]));
-  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_');
-  if (!ok)
-    throw ApiError(400,
-                   "must be 1 to " + std::to_string(kMaxNameLength) +
-                       " letters, digits, '.', '-' or '_', starting with a letter or digit (got \"" + name + "\")",
-                   "name");
-  return name;
-}
 
 // The field a run's refusal is reported on: the varied path it comes from ("vary.PATH", as
 // `grainlab sweep` names it), else runs[K].FIELD.

@@ -12,6 +12,7 @@
 #include "grainlab/studies/paper/run_plan.hpp"
 #include "api_types.hpp"
 #include "run_service.hpp"
+#include "study_name.hpp"
 
 namespace grainlab::server {
 
@@ -35,18 +36,7 @@ std::string RunService::launchPaperStudy(const nlohmann::ordered_json& spec) {
     if (!paper["quick"].is_boolean()) throw ApiError(400, "must be true or false", "paper.quick");
     quick = paper["quick"].get<bool>();
   }
-  std::string name = std::string("paper") + (quick ? "-quick" : "") + "-" + std::to_string(seeds) + "-seeds";
-  if (spec.contains("name")) {
-    // Checked as a sweep study's name is (study_launch.cpp).
-    if (!spec["name"].is_string()) throw ApiError(400, "must be a string", "name");
-    name = spec["name"].get<std::string>();
-    bool ok = !name.empty() && name.size() <= 64 && std::isalnum(static_cast<unsigned char>(name[0]));
-    for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_');
-    if (!ok)
-      throw ApiError(400, "must be 1 to 64 letters, digits, '.', '-' or '_', starting with a letter or digit (got \"" +
-                              name + "\")",
-                     "name");
-  }
+  const std::string name = studyName(spec, std::string("paper") + (quick ? "-quick" : "") + "-" + std::to_string(seeds) + "-seeds");
   const std::vector<std::string> presets = report::paperPresets(quick);
   const std::size_t count = presets.size() * static_cast<std::size_t>(seeds);
   const std::size_t ceiling = static_cast<std::size_t>(manager_.maxConcurrent() + std::max(0, options_.maxQueuedRuns));

@@ -26,6 +26,7 @@
 #include "api_types.hpp"
 #include "repository.hpp"
 #include "run_service.hpp"
+#include "study_name.hpp"
 
 namespace grainlab::server {
 namespace {
@@ -112,18 +113,7 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 
 std::string RunService::launchTradeoffStudy(const nlohmann::ordered_json& spec) {
   const tradeoff::TradeoffOptions opt = tradeoffOptions(spec);
-  std::string name = std::string("tradeoff") + (opt.quick ? "-quick" : "") + "-" + std::to_string(opt.seeds) + "-seeds";
-  if (spec.contains("name")) {
-    // Checked as a sweep study's name is (study_launch.cpp).
-    if (!spec["name"].is_string()) throw ApiError(400, "must be a string", "name");
-    name = spec["name"].get<std::string>();
-    bool ok = !name.empty() && name.size() <= 64 && std::isalnum(static_cast<unsigned char>(name[0]));
-    for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_');
-    if (!ok)
-      throw ApiError(400, "must be 1 to 64 letters, digits, '.', '-' or '_', starting with a letter or digit (got \"" +
-                              name + "\")",
-                     "name");
-  }
+  const std::string name = studyName(spec, std::string("tradeoff") + (opt.quick ? "-quick" : "") + "-" + std::to_string(opt.seeds) + "-seeds");
   const tradeoff::EnsemblePlan ensemble = plan(opt);
   const std::size_t count = ensemble.runSetting.size() * static_cast<std::size_t>(ensemble.seeds);
   const std::size_t ceiling = static_cast<std::size_t>(manager_.maxConcurrent() + std::max(0, options_.maxQueuedRuns));
