@@ -18,12 +18,14 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/stopping_output.hpp"
 
 namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
 using grainlab::testing::fileBytes;
+using grainlab::testing::StoppingOutput;
 
 constexpr double kPressure = 300e3;   // the preset's σ11, Pa
 constexpr double kServoTolerance = 0.005;  // the cell servo's stated hold (docs/periodic-cell.md)
@@ -68,21 +70,6 @@ std::map<std::string, std::vector<double>> readSeries(const fs::path& file, std:
   }
   return columns;
 }
-
-class StoppingOutput : public RunOutput {
- public:
-  StoppingOutput(const fs::path& dir, const Scene& scene, double stopAt)
-      : RunOutput(dir.string(), scene, nullptr), stopAt_(stopAt) {}
-  void onProgress(double fraction, std::string_view stage, const World& world) override {
-    RunOutput::onProgress(fraction, stage, world);
-    progress_ = fraction;
-  }
-  bool stopRequested() override { return progress_ >= stopAt_; }
-
- private:
-  double stopAt_;
-  double progress_ = 0;
-};
 
 class PeriodicRun : public ::testing::Test {
  protected:

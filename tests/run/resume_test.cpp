@@ -19,6 +19,7 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/stopping_output.hpp"
 
 namespace grainlab {
 namespace {
@@ -26,22 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using grainlab::testing::fileBytes;
-
-// The files of a run; stops it (as SIGTERM would) once its progress passes `stopAt`.
-class StoppingOutput : public RunOutput {
- public:
-  StoppingOutput(const fs::path& dir, const Scene& scene, double stopAt)
-      : RunOutput(dir.string(), scene, nullptr), stopAt_(stopAt) {}
-  void onProgress(double fraction, std::string_view stage, const World& world) override {
-    RunOutput::onProgress(fraction, stage, world);
-    progress_ = fraction;
-  }
-  bool stopRequested() override { return progress_ >= stopAt_; }
-
- private:
-  double stopAt_;
-  double progress_ = 0;
-};
+using grainlab::testing::StoppingOutput;
 
 // The files of a run, and the cost it announced before its first step.
 class EstimatingOutput : public RunOutput {
