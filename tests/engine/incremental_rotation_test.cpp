@@ -4,9 +4,11 @@
 // polygon pile the baseline's forces to within what that rounding moves a contact by.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
+#include <vector>
 
 #include "grainlab/bench_scenes.hpp"
 #include "grainlab/simd_path.hpp"
