@@ -9,6 +9,7 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/world.hpp"
@@ -22,9 +23,10 @@ class Collector : public RunObserver {
  public:
   explicit Collector(py::object progress) : progress_(std::move(progress)) {}
 
-  void onSample(const Sample& sample, const World&) override {
+  void onSample(const Sample& sample, const World& world) override {
     rows_.push_back(sample.values);
     stages_.push_back(sample.stage);
+    if (const PeriodicCell* cell = world.periodicCell()) cellRows_.push_back(cell->edges());
   }
 
   void onProgress(double fraction, std::string_view stage, const World&) override {
@@ -49,6 +51,7 @@ class Collector : public RunObserver {
 
   void onFinish(const RunSummary& summary, const World& world) override {
     summary_ = summaryJson(summary, world);
+    if (const PeriodicCell* cell = world.periodicCell()) finalCell_ = cell->edges();
     const auto x = world.positions();
     const auto v = world.velocities();
     for (int k = 0; k < world.size(); ++k) {
@@ -84,6 +87,23 @@ class Collector : public RunObserver {
     for (size_t r = 0; r < rows_.size(); ++r)
       for (py::ssize_t c = 0; c < cols; ++c) m(static_cast<py::ssize_t>(r), c) = rows_[r][static_cast<size_t>(c)];
     out["values"] = values;
+
+    // A periodic cell's edges h (columns h1, h2, m) at the end and at each sample; None for a ring.
+    out["cell"] = py::none();
+    out["cell_series"] = py::none();
+    if (finalCell_) {
+      py::array_t<double> h({2, 2});
+      auto hm = h.mutable_unchecked<2>();
+      for (py::ssize_t a = 0; a < 2; ++a)
+        for (py::ssize_t b = 0; b < 2; ++b) hm(a, b) = (*finalCell_)(a, b);
+      out["cell"] = h;
+      py::array_t<double> series({static_cast<py::ssize_t>(cellRows_.size()), py::ssize_t{2}, py::ssize_t{2}});
+      auto sm = series.mutable_unchecked<3>();
+      for (size_t r = 0; r < cellRows_.size(); ++r)
+        for (py::ssize_t a = 0; a < 2; ++a)
+          for (py::ssize_t b = 0; b < 2; ++b) sm(static_cast<py::ssize_t>(r), a, b) = cellRows_[r](a, b);
+      out["cell_series"] = series;
+    }
 
     // The keys of summary.json, as OutputWriter writes them.
     out["summary"] = py::module_::import("json").attr("loads")(summary_.dump());
@@ -128,6 +148,8 @@ class Collector : public RunObserver {
   std::optional<py::error_already_set> error_;
   std::vector<std::vector<double>> rows_;
   std::vector<std::string> stages_;
+  std::vector<Eigen::Matrix2d> cellRows_;    // h at each sample, for a run in a periodic cell
+  std::optional<Eigen::Matrix2d> finalCell_;
   nlohmann::json summary_;  // summary.json's content
   std::vector<long long> id_;
   std::vector<std::string> shape_;
