@@ -22,7 +22,7 @@ import {
 const CHAIN_CLASSES = 10;
 const PATH_CHUNK = 48;  // shapes or chain lines per path: see above
 const OUTLINE_MIN_PIXELS = 2.5;  // particles smaller than this on screen are filled only
-const CELL_STROKE = '#1f5f8b';
+export const CELL_STROKE = '#1f5f8b';
 
 export class ParticleView {
   /** @param {HTMLCanvasElement} canvas */
