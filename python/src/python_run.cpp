@@ -68,6 +68,14 @@ class Collector : public RunObserver {
       boundary_.push_back(world.boundaryFlags()[k] ? 1 : 0);
     }
     world.contacts(contacts_);
+    // j's centre as i meets it: in a periodic cell the nearest image, so lj is the branch
+    // vector the contact acts through (as contacts_final.csv writes it).
+    const PeriodicCell* cell = world.periodicCell();
+    for (const ContactRecord& c : contacts_) {
+      if (c.isWall()) jCentre_.emplace_back(std::nan(""), std::nan(""));
+      else if (cell) jCentre_.push_back(x[c.i] + cell->minimumImage(x[c.j] - x[c.i]));
+      else jCentre_.push_back(x[c.j]);
+    }
   }
 
   // Called with the GIL held, after the run.
@@ -124,11 +132,12 @@ class Collector : public RunObserver {
     std::vector<long long> ci, cj;
     std::vector<double> cols12[10];
     const double nan = std::nan("");
-    for (const ContactRecord& c : contacts_) {
+    for (size_t k = 0; k < contacts_.size(); ++k) {
+      const ContactRecord& c = contacts_[k];
       ci.push_back(c.i);
       cj.push_back(c.j);
       const Vec2 li = c.point - Vec2(px_[c.i], py_[c.i]);
-      const Vec2 lj = c.isWall() ? Vec2(nan, nan) : Vec2(c.point - Vec2(px_[c.j], py_[c.j]));
+      const Vec2 lj = c.isWall() ? Vec2(nan, nan) : Vec2(c.point - jCentre_[k]);
       const double row[10] = {c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.fn, c.ft,
                               li.x(),      li.y(),      lj.x(),       lj.y()};
       for (int k = 0; k < 10; ++k) cols12[k].push_back(row[k]);
@@ -156,6 +165,7 @@ class Collector : public RunObserver {
   std::vector<double> px_, py_, angle_, vx_, vy_, spin_, radius_;
   std::vector<unsigned char> boundary_;
   std::vector<ContactRecord> contacts_;
+  std::vector<Vec2> jCentre_;  // per contact
 };
 
 }  // namespace
