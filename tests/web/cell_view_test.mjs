@@ -2,7 +2,7 @@
 // frames carry the cell's edges (decoded by the dashboard's own frame_codec.js), and the run
 // view draws the cell's outline, the image of a disc that crosses an edge on the far side, and
 // nothing outside the cell (read from the canvas's pixels, placed through the world-to-pixel
-// map the view exposes). No console errors.
+// map the view exposes); a replayed stored frame likewise. No console errors.
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { WEB, check, runBrowserTest, screenshot, waitUntil, watchConsole } from './harness.mjs';
@@ -77,5 +77,14 @@ await runBrowserTest([], async ({ server, browser }) => {
   check('nothing is drawn outside the cell (the disc is clipped at the edge)', !differs(clipped, background), `${clipped}`);
   // The outline's colour, #1f5f8b: blue above red and green.
   check('the outline is drawn on the edge', edge[2] > edge[0] + 60 && edge[2] > edge[1] + 20, `${edge}`);
+
+  // Replay: the slider back to the first sample loads a stored frame, still drawn in its cell.
+  const slider = page.locator('.replay-bar input[type=range]');
+  await waitUntil(() => page.$eval('.replay-bar input[type=range]', (e) => !e.disabled), 30);
+  const stepBefore = await canvas.evaluate((c) => c.dataset.step);
+  await slider.fill('0');
+  const replayed = await waitUntil(async () => canvas.evaluate((c, before) => (c.dataset.step !== before ? { ...c.dataset } : null), stepBefore), 20);
+  check('a replayed (stored) frame is drawn in its cell too, with the crossing disc\'s image',
+    replayed && replayed.cell === drawn.cell && replayed.cellImages === '1', `step ${stepBefore} → ${replayed?.step}`);
   check('no console errors, page exceptions or failed requests', consoleWatch.errors.length === 0, consoleWatch.errors.join('\n'));
 });
