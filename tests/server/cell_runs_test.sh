@@ -2,7 +2,8 @@
 # Periodic cell runs through the server: a two-seed sweep of the quick periodic biaxial preset
 # (shearing cut to 0.5 % strain, its specimens prepared once per seed) imported with
 # `grainlab import` and POST /api/sweeps/import, its series served byte for byte as the runs'
-# series.csv; and a cell scene posted to the API whose stored frames carry the cell's edges
+# series.csv, and one seed of it launched by the server as a study (POST /api/studies) with
+# the same peak φ_mob; and a cell scene posted to the API whose stored frames carry the cell's edges
 # after a 56-byte header (docs/stream-protocol.md), where a ring run's frames keep the 40 bytes.
 source "$(dirname "$0")/lib.sh"
 cli=$GRAINLAB_CLI
@@ -32,6 +33,23 @@ check "an imported cell run's series is its series.csv byte for byte" \
   cmp <(printf '%s' "$BODY") "$TMP_ROOT/cells/runs/002-seed=2-target_axial_strain=0.005/series.csv"
 req POST /api/sweeps/import -H 'Content-Type: application/json' -d "{\"dir\": \"$TMP_ROOT/cells\"}"
 expect "POST /api/sweeps/import of the same sweep finds both there" 200 '"already_there":2'
+
+# The same cell run launched by the server as a study: the same peak φ_mob, to the bit.
+req POST /api/studies -d '{"name": "cellstudy", "base": {"preset": "periodic-biaxial-circular-quick"},
+  "vary": {"seed": [2], "stages.2.target_axial_strain": [0.005]}}'
+expect "POST /api/studies launches a study of a periodic preset" 201 '"name":"cellstudy"'
+for _ in $(seq 600); do
+  req GET /api/studies/cellstudy
+  [[ $(json b.status) == completed || $(json b.status) == failed ]] && break
+  sleep 0.1
+done
+expect "...which completes" 200 '"status":"completed"'
+req GET "/api/runs?study=cellstudy"
+check "...with the sweep's peak phi_mob for seed 2, bit for bit" test "$(node -e "
+  const rows = require('fs').readFileSync('$TMP_ROOT/cells/sweep.csv', 'utf8').trim().split('\n').map((l) => l.split(','));
+  const h = rows[0], sweep = Number(rows[2][h.indexOf('peak_phi_mob_deg')]);
+  const b = JSON.parse(process.argv[1]);
+  console.log(b.runs[0].peak_phi_mob_deg === sweep && sweep > 0)" "$BODY")" = true
 
 # A cell of explicit particles through POST /api/runs, and its stored frames.
 cell='{"name":"cell","particles":[{"shape":"disc","radius":0.002,"position":[0.0005,0.005]},{"shape":"disc","radius":0.002,"position":[0.01,0.01]}],"boundary":{"type":"periodic","size":[0.02,0.015]},"stages":[{"type":"free","duration":0.002}],"output":{"sample_interval":0.0005}}'
