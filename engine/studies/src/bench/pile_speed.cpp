@@ -7,6 +7,7 @@
 #include "grainlab/bench_scenes.hpp"
 #include "grainlab/periodic_cell.hpp"
 #include "grainlab/simd_path.hpp"
+#include "grainlab/state_archive.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
 
 namespace grainlab::bench {
@@ -43,8 +44,8 @@ std::vector<Scene> benchPiles() {
 
 namespace {
 
-// The scene's world, settled (not timed): the pile is dense, with a realistic number of contacts.
-std::unique_ptr<World> settledWorld(const Scene& scene, int threads, WorldSettings::Engine engine) {
+// The scene's world as built, not stepped.
+std::unique_ptr<World> builtWorld(const Scene& scene, int threads, WorldSettings::Engine engine) {
   WorldSettings settings;
   settings.threads = threads;
   settings.engine = engine;
@@ -52,6 +53,12 @@ std::unique_ptr<World> settledWorld(const Scene& scene, int threads, WorldSettin
   for (const ParticleSpec& p : scene.particles) world->addParticle(p);
   for (const Wall& w : scene.walls) world->addWall(w);
   world->setGravity(scene.gravity);
+  return world;
+}
+
+// The scene's world, settled (not timed): the pile is dense, with a realistic number of contacts.
+std::unique_ptr<World> settledWorld(const Scene& scene, int threads, WorldSettings::Engine engine) {
+  std::unique_ptr<World> world = builtWorld(scene, threads, engine);
   const int settleSteps = static_cast<int>(scene.stages.front().duration / world->timestep());
   for (int k = 0; k < settleSteps; ++k) world->step();
   world->checkHealth();
@@ -143,6 +150,27 @@ CellSpeeds measureCellAgainstPile(const Scene& pile, const Scene& cell, double s
   }
   pileWorld->checkHealth();
   cellWorld->checkHealth();
+  return r;
+}
+
+ThreadSpeeds measureThreadScaling(const Scene& scene, int threads, int steps, int repeats, std::ostream* progress) {
+  if (progress) *progress << "bench: " << scene.name << " (" << scene.particles.size() << " particles) settling on "
+                          << threads << " threads\n";
+  const std::unique_ptr<World> threaded = settledWorld(scene, threads, WorldSettings::Engine::Dem);
+  StateArchive saved;
+  threaded->persist(saved);
+  const std::unique_ptr<World> serial = builtWorld(scene, 1, WorldSettings::Engine::Dem);
+  serial->initialize();
+  StateArchive load(saved.bytes());
+  serial->persist(load);
+  ThreadSpeeds r{describe(scene, *serial), describe(scene, *threaded)};
+  if (progress) *progress << "bench: timing 1 and " << threads << " threads in turn\n";
+  for (int rep = 0; rep < repeats; ++rep) {
+    timeRepeat(*serial, steps, 1, r.serial);
+    timeRepeat(*threaded, steps, threads, r.threaded);
+  }
+  serial->checkHealth();
+  threaded->checkHealth();
   return r;
 }
 

@@ -67,4 +67,12 @@ struct CellSpeeds {
 CellSpeeds measureCellAgainstPile(const Scene& pile, const Scene& cell, double shearRate, int steps, int repeats,
                                   int threads, std::ostream* progress);
 
+/// One settled pile timed on one thread and on `threads` in turn (1, N, 1, …: both see the same
+/// load): the pile settles once on `threads` threads and is copied, state and contact history,
+/// into a one-thread world (the two then step the same bits), `repeats` × `steps` steps each.
+struct ThreadSpeeds {
+  PileSpeed serial, threaded;
+};
+ThreadSpeeds measureThreadScaling(const Scene& scene, int threads, int steps, int repeats, std::ostream* progress);
+
 }  // namespace grainlab::bench
