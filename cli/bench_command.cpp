@@ -23,6 +23,19 @@ int benchCommand(const std::vector<std::string>& args) {
       return 2;
     }
   }
+  // Issue-sized: 20,000 discs (the disc pile's, 200 × 100), on one thread and on --threads
+  // (2 unless given) in turn. Only when asked for by name: settling it takes minutes.
+  if (only == "disc-pile-20k") {
+    Scene large = pileScene(200, 100, false);
+    large.name = only;
+    const int n = threads > 1 ? threads : 2;
+    const bench::ThreadSpeeds t = bench::measureThreadScaling(large, n, steps, repeats, &std::cerr);
+    std::cout << only << " " << t.serial.particles << " discs, coordination " << std::setprecision(3)
+              << t.serial.coordination << ": 1 thread " << std::setprecision(4) << t.serial.medianRate() / 1e6 << " M, "
+              << n << " threads " << t.threaded.medianRate() / 1e6 << " M particle-steps/s in turn: "
+              << t.threaded.medianRate() / t.serial.medianRate() << "x\n";
+    return 0;
+  }
   const std::vector<Scene> scenes = bench::benchPiles();
   std::vector<bench::PileSpeed> results;
   for (const Scene& scene : scenes) {
@@ -38,19 +51,6 @@ int benchCommand(const std::vector<std::string>& args) {
               << r.coordination << std::setprecision(4) << r.medianRate() / 1e6
               << " M" << std::setw(17) << " " << "(" << *std::min_element(r.rates.begin(), r.rates.end()) / 1e6
               << " .. " << *std::max_element(r.rates.begin(), r.rates.end()) / 1e6 << " M)\n";
-  }
-  // Issue-sized: 20,000 discs (the disc pile's, 200 × 100), on one thread and on --threads
-  // (2 unless given) in turn. Only when asked for by name: settling it takes minutes.
-  if (only == "disc-pile-20k") {
-    Scene large = pileScene(200, 100, false);
-    large.name = only;
-    const int n = threads > 1 ? threads : 2;
-    const bench::ThreadSpeeds t = bench::measureThreadScaling(large, n, steps, repeats, &std::cerr);
-    std::cout << only << " " << t.serial.particles << " discs, coordination " << std::setprecision(3)
-              << t.serial.coordination << ": 1 thread " << std::setprecision(4) << t.serial.medianRate() / 1e6 << " M, "
-              << n << " threads " << t.threaded.medianRate() / 1e6 << " M particle-steps/s in turn: "
-              << t.threaded.medianRate() / t.serial.medianRate() << "x\n";
-    return 0;
   }
   if (results.empty() && only != "periodic-pile") {
     std::cerr << "grainlab bench: no scene named " << only
