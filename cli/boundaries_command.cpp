@@ -9,17 +9,10 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/studies/boundary_comparison/boundary_study.hpp"
 #include "grainlab/studies/draw/svg_chart.hpp"
+#include "option_list.hpp"
 
 namespace grainlab {
 namespace {
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
 
 std::string axisLabel(const std::string& quantity) {
   if (quantity == "phi_mob_deg") return "φ_mob (°)";
