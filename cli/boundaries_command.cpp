@@ -41,7 +41,12 @@ std::string curvesSvg(const boundaries::BoundaryStudy& study) {
       spec.yLabel = axisLabel(quantities[row]);
       spec.width = w;
       spec.height = h;
-      if (quantities[row] == "omega_macro_deg") spec.yReferences = {0.0};
+      if (quantities[row] == "omega_macro_deg") {
+        // Near zero strain the stress is isotropic and ω undefined: its intervals span ±90°.
+        spec.yReferences = {0.0};
+        spec.yMin = -45;
+        spec.yMax = 45;
+      }
       size_t colour = 0;
       for (const auto& c : study.curves) {
         if (c.assembly != assemblies[col] || c.quantity != quantities[row]) continue;
