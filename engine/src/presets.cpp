@@ -175,6 +175,10 @@ json cellRotationStage(bool quick) {
 json periodicScene(const std::string& name, const std::string& path, const std::string& kind, bool quick) {
   json scene = path == "biaxial" ? paperScene(name, kind, quick) : pathScene(name, path, kind, quick);
   if (path == "rotation") scene["stages"][2] = cellRotationStage(quick);
+  // A quick cell is wider than the quick ring's 0.06 m specimen: in a cell of 177 discs, about
+  // 13 diameters across, chains spanning the cell along the compression lock and collapse
+  // (docs/periodic-cell.md, "Presets", measured).
+  if (quick) scene["assembly"]["specimen_diameter"] = 0.11;
   scene["boundary"] = {{"type", "periodic"}};
   scene["stages"][0] = {{"type", "isotropic"}, {"name", "compaction"}, {"pressure", 3e3}, {"strain_rate", 0.25},
                         {"friction", 0.0}, {"max_time", 4.0}};

@@ -14,7 +14,6 @@
 
 #include "grainlab/checkpoint.hpp"
 #include "grainlab/presets.hpp"
-#include "grainlab/simd_path.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/run_output.hpp"
 
@@ -79,15 +78,7 @@ class PeriodicRun : public ::testing::Test {
   void TearDown() override { fs::remove_all(root_); }
 };
 
-// On the baseline contact path, the trajectory the servo's tolerance was checked on. The quick
-// preset's shearing does not hold σ11 within it on every trajectory: with seeds 2-4 instead of
-// 1, σ11 strays by up to 5.4 p on the baseline and 1.9 p on the wide path; with seed 1 the wide
-// path (whose rounding gives another trajectory) strays by 30 % at the first sample.
 TEST_F(PeriodicRun, SeriesMeasuresTheCellAndSigma11StaysAtItsTarget) {
-  overrideSimdPath(SimdPath::Baseline);
-  struct Restore {
-    ~Restore() { overrideSimdPath(std::nullopt); }
-  } restore;
   const Scene scene = parseScene(shortScene());
   RunOutput output((root_ / "run").string(), scene, nullptr);
   const RunSummary summary = runScene(scene, output);
