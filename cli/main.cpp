@@ -20,6 +20,7 @@
 #include "paper_command.hpp"
 #include "sweep_command.hpp"
 #include "shapes_command.hpp"
+#include "boundaries_command.hpp"
 #include "tradeoff_command.hpp"
 #ifdef GRAINLAB_HAS_SERVER
 #include "grainlab/server/import.hpp"
@@ -59,6 +60,9 @@ int usage(std::ostream& out, int code) {
          "  shapes --out DIR [--full] [--seeds N] [--jobs N] [--representations A,B] [--assemblies A,B]\n"
          "                               shape fidelity: clumps-N, rolling-MU, discs against the hexagons,\n"
          "                               N seeds each: shapes.csv, calibration.csv, shapes.svg (resumes)\n"
+         "  boundaries --out DIR [--full] [--seeds N] [--jobs N] [--boundaries A,B] [--assemblies A,B]\n"
+         "             [--axial-strain E]  the ring and the periodic cell (cell, cell-matched) side by side,\n"
+         "                               N seeds each: boundaries.csv, curves.csv, curves.svg (resumes)\n"
 #ifdef GRAINLAB_HAS_SERVER
          "  serve [--host H] [--port P] [--db FILE] [--web DIR]\n"
          "        [--max-concurrent N] [--max-queued N] [--max-particles N] [--max-body BYTES]\n"
@@ -183,6 +187,7 @@ int main(int argc, char** argv) {
     if (command == "paper") return grainlab::paperCommand(args);
     if (command == "tradeoff") return grainlab::tradeoffCommand(args);
     if (command == "shapes") return grainlab::shapesCommand(args);
+    if (command == "boundaries") return grainlab::boundariesCommand(args);
     if (command == "sweep") return grainlab::sweepCommand(args);
 #ifdef GRAINLAB_HAS_SERVER
     if (command == "serve") return serveCommand(args);

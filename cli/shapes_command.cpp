@@ -9,17 +9,10 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/studies/draw/pareto_plot.hpp"
 #include "grainlab/studies/shape_fidelity/shape_study.hpp"
+#include "option_list.hpp"
 
 namespace grainlab {
 namespace {
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
 
 // The default comparison (docs/shape-fidelity.md): clumps of 2, 3 and 5 discs; discs at the
 // rolling frictions the calibration measured, and at the μ_r it interpolated on the quick

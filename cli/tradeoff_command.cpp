@@ -9,18 +9,10 @@
 #include "grainlab/studies/draw/pareto_plot.hpp"
 #include "grainlab/studies/tradeoff/ensemble_tradeoff.hpp"
 #include "grainlab/studies/tradeoff/tradeoff_study.hpp"
+#include "option_list.hpp"
 
 namespace grainlab {
 namespace {
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
 
 // --seeds N: biases with intervals (tradeoff.csv per setting and quantity); stdout gives each
 // setting's cost and how many quantities it biases.

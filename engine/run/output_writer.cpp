@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab {
@@ -215,7 +216,10 @@ void OutputWriter::onFinish(const RunSummary& summary, const World& world) {
             num(c.normal.x()) + "," + num(c.normal.y()) + "," + num(c.fn) + "," + num(c.ft) + "," + num(li.x()) + "," +
             num(li.y()) + ",";
     if (!c.isWall()) {
-      const Vec2 lj = c.point - x[c.j];
+      // In a periodic cell, from the image of j that i touches: the branch vector the contact
+      // acts through (docs/periodic-cell.md, "Stress").
+      const PeriodicCell* cell = world.periodicCell();
+      const Vec2 lj = c.point - (cell ? Vec2(x[c.i] + cell->minimumImage(x[c.j] - x[c.i])) : x[c.j]);
       text += num(lj.x()) + "," + num(lj.y());
     } else {
       text += ",";  // a wall has no centroid

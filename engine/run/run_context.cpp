@@ -82,6 +82,10 @@ Stage& RunContext::beginStage(size_t index) {
   stageIndex_ = index;
   const StageSpec& spec = scene_.stages[index];
   world_->setFriction(spec.friction.value_or(scene_.material.friction));
+  // Each stage starts from a cell at rest. Stopping it here rather than in endStage keeps the
+  // ended stage's L in its kept specimen, so a run started from that specimen samples the
+  // same state as the run that kept it (its strain-rate columns included).
+  if (world_->periodicCell()) world_->setCellVelocityGradient(Eigen::Matrix2d::Zero());
   if (spec.type == StageSpec::Type::Isotropic || isShearing(spec.type)) {
     sampler_->resetStrainReference();
   }
@@ -101,7 +105,6 @@ void RunContext::endStage() {
     voidRatioAfterConsolidation_ = sampler_->lastVoidRatio();
   }
   if (membrane_) membrane_->setStrainRates(0, 0);
-  if (world_->periodicCell()) world_->setCellVelocityGradient(Eigen::Matrix2d::Zero());
 }
 
 void RunContext::persist(StateArchive& a) {

@@ -62,7 +62,10 @@ void ValidityMonitor::observe(const Sample& sample, const World& world, size_t s
   if (stage.type == StageSpec::Type::Free || first) return;
   const double inertial = sample.values[columnIndex(SeriesColumnId::InertialNumber)];
   if (isShearing(stage.type) && std::isfinite(inertial)) {
-    record("inertial_number", inertial, stageField(stageIndex, rateKey(stage.type)), sample.step,
+    // A rotation in a cell is stress-controlled: its strain rate is the servos', capped there.
+    const bool cellRotation = stage.type == StageSpec::Type::Rotation && scene_.boundary.type == BoundarySpec::Type::Periodic;
+    const std::string rateField = cellRotation ? "boundary.rate_cap" : stageField(stageIndex, rateKey(stage.type));
+    record("inertial_number", inertial, rateField, sample.step,
            "the inertial number is " + g(inertial));
   }
   // The mean overlap of the contacts, over the mean radius of the particles in them.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "grainlab/output_writer.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab {
@@ -108,6 +109,25 @@ std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.17g", v);
   return b;
+}
+
+// The periodic cell's outline: points 0, h1, h1 + h2, h2 and one closed line through them; the
+// edges also as cell data, h1 and h2 (m).
+void writeCellOutline(const PeriodicCell& cell, const fs::path& path) {
+  const auto& h = cell.edges();
+  const Vec2 h1(h(0, 0), h(1, 0)), h2(h(0, 1), h(1, 1));
+  PolyDataFile outline;
+  std::vector<double> points;
+  for (const Vec2& p : {Vec2(0, 0), h1, Vec2(h1 + h2), h2}) points.insert(points.end(), {p.x(), p.y(), 0.0});
+  outline.points = 4;
+  outline.lines.connectivity = {0, 1, 2, 3, 0};
+  outline.lines.close();
+  AppendedData& d = outline.data;
+  outline.cellData = d.array("h1", 3, std::vector<double>{h1.x(), h1.y(), 0.0}) +
+                     d.array("h2", 3, std::vector<double>{h2.x(), h2.y(), 0.0}) +
+                     d.array("area", 1, std::vector<double>{cell.area()});
+  outline.pointsArray = d.array("Points", 3, points);
+  outline.write(path);
 }
 
 }  // namespace
@@ -259,8 +279,10 @@ void VtkWriter::writeFrame(const World& world) {
   std::vector<std::int32_t> ci, cj;
   std::vector<std::uint8_t> sliding;
   const double mu = world.material().friction;
+  const PeriodicCell* cell = world.periodicCell();
   for (const ContactRecord& c : contacts_) {
-    const Vec2 end = c.isWall() ? c.point : x[c.j];
+    // In a periodic cell, to the image of j that i touches (the line does not cross the cell).
+    const Vec2 end = c.isWall() ? c.point : cell ? Vec2(x[c.i] + cell->minimumImage(x[c.j] - x[c.i])) : x[c.j];
     linePoints.insert(linePoints.end(), {x[c.i].x(), x[c.i].y(), 0.0, end.x(), end.y(), 0.0});
     pointFn.insert(pointFn.end(), {c.fn, c.fn});
     const auto first = static_cast<std::int64_t>(linePoints.size() / 3 - 2);
@@ -283,6 +305,11 @@ void VtkWriter::writeFrame(const World& world) {
                    ld.array("normal", 3, normal);
   lines.pointsArray = ld.array("Points", 3, linePoints);
   lines.write(vtk / frameName("contacts", frame));
+
+  if (cell) {
+    writeCellOutline(*cell, vtk / frameName("cell", frame));
+    bytes_ += fs::file_size(vtk / frameName("cell", frame));
+  }
 
   frames_.emplace_back(world.time(), frame);
   lastFrameStep_ = world.stepCount();
@@ -307,7 +334,13 @@ void VtkWriter::writeCollection() const {
     }
     return text + "</Collection>\n</VTKFile>\n";
   };
-  writeAtomically(vtk / "run.pvd", collection({"particles", "contacts"}), "", "");
+  if (fs::exists(vtk / frameName("cell", frames_.front().second))) {
+    // A run in a periodic cell: its outline is the third part of every frame.
+    writeAtomically(vtk / "run.pvd", collection({"particles", "contacts", "cell"}), "", "");
+    writeAtomically(vtk / "cell.pvd", collection({"cell"}), "", "");
+  } else {
+    writeAtomically(vtk / "run.pvd", collection({"particles", "contacts"}), "", "");
+  }
   writeAtomically(vtk / "particles.pvd", collection({"particles"}), "", "");
   writeAtomically(vtk / "contacts.pvd", collection({"contacts"}), "", "");
 }

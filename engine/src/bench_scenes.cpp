@@ -60,4 +60,15 @@ Scene clumpPileScene(int columns, int rows, std::uint64_t seed) {
   return scene;
 }
 
+Scene periodicPileScene(int columns, int rows, std::uint64_t seed) {
+  Scene scene = pileScene(columns, rows, false, seed);
+  scene.name = "periodic-pile";
+  const double spacing = 2.25 * 0.002;  // pileScene's
+  scene.walls.clear();
+  scene.gravity = Vec2::Zero();
+  scene.boundary.type = BoundarySpec::Type::Periodic;
+  scene.boundary.cellSize = Vec2(columns * spacing, rows * spacing);
+  return scene;
+}
+
 }  // namespace grainlab

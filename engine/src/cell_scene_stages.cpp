@@ -120,6 +120,7 @@ std::unique_ptr<Stage> makeCellStage(const StageSpec& spec, const OutputSpec& ou
       loading.d12 = CellComponent::prescribed(-0.5 * spec.shearRate);
       loading.spin = 0.5 * spec.shearRate;
       return std::make_unique<CellSceneStage>(spec, output, world, loading, End::ShearStrain);
+    case T::Rotation: return makeCellRotationStage(spec, output, world, rateCap);
     default: break;
   }
   throw std::invalid_argument("a periodic cell cannot run a " + std::string(toString(spec.type)) + " stage");

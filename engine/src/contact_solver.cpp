@@ -314,7 +314,8 @@ void ContactSolver::pairForces(const Law& law, double dt) {
 template <class Law>
 void ContactSolver::widePairForces(const Law& law, double dt) {
   if (discBatchStale_) {
-    discBatch_.build(neighbors_, particles_.size(), material_.rollingFriction > 0 ? &rollingPairs_ : nullptr);
+    discBatch_.build(neighbors_, particles_.size(), material_.rollingFriction > 0 ? &rollingPairs_ : nullptr,
+                     particles_.cell.has_value());
     discBatchStale_ = false;
   }
   DiscPairBatch& b = discBatch_;
@@ -336,6 +337,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
     in.rollingCapPerForce = b.rollingCapPerForce();
     in.rollingDamping = b.rollingDamping();
   }
+  if (particles_.cell) setWideCell(in);
   wideStateAhead_ = true;
   const int blocks = b.paddedSlots() / kDiscPairBlock;
   const int wallPairs = static_cast<int>(b.wallPairs().size());
@@ -460,10 +462,10 @@ void ContactSolver::carryPolygonCache() {
 void ContactSolver::computeForces(double dt, bool moved) {
   auto t0 = Clock::now();
   // The wide kernel knows the linear spring-dashpot with Coulomb friction or none, and rolling
-  // resistance (whose relative rotation it keeps, in a frictionless stage too). It does not
-  // know a periodic cell's images: a periodic scene keeps the baseline.
+  // resistance (whose relative rotation it keeps, in a frictionless stage too), and a periodic
+  // cell's images.
   const bool periodic = particles_.cell.has_value();
-  const bool wide = particles_.polygons.empty() && !periodic && simdPath() == SimdPath::Wide;
+  const bool wide = particles_.polygons.empty() && simdPath() == SimdPath::Wide;
   // The pairs' state goes back to the list when the baseline reads it or a rebuild carries it
   // over; after a baseline step the batch reloads it.
   if (!wide || moved) writeBackWideState();

@@ -13,6 +13,7 @@
 #include "contact_law.hpp"
 #include "rolling_resistance.hpp"
 #include "disc_pair_batch.hpp"
+#include "disc_pair_kernel.hpp"
 #include "grainlab/contact.hpp"
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
@@ -62,6 +63,8 @@ class ContactSolver {
   // velocity of that image relative to i, L (x_j + shift − x_i).
   Vec2 imageShift(size_t k) const { return particles_.cell->shift(neighbors_.shifts()[k]); }
   Vec2 affineRelativeVelocity(const PairState& p, size_t k) const;
+  // The wide kernel's view of the cell this step: the slots' image shifts, h and L.
+  void setWideCell(DiscPairKernelInput& in) const;
   // Rebuilds the list in the cell when due: remaps a far-tilted cell, wraps the positions into
   // it, bins them. Returns true if it rebuilt.
   bool updatePeriodicNeighbors(bool moved);

@@ -1,6 +1,6 @@
 // The contact solver's part in a periodic cell: the neighbour list rebuilt in the cell (after
 // remapping a far-tilted cell and wrapping the positions into it), each pair's image shift, and
-// the image's affine velocity.
+// the image's affine velocity, and what the wide kernel reads of the cell.
 #include "contact_solver.hpp"
 
 namespace grainlab {
@@ -10,6 +10,20 @@ Vec2 ContactSolver::affineRelativeVelocity(const PairState& p, size_t k) const {
   // affine relative velocity is L times the branch vector to the image.
   const Vec2* x = particles_.position.data();
   return particles_.cell->affineVelocity(x[p.j] + imageShift(k) - x[p.i]);
+}
+
+void ContactSolver::setWideCell(DiscPairKernelInput& in) const {
+  const PeriodicCell& cell = *particles_.cell;
+  in.imageN1 = discBatch_.imageN1();
+  in.imageN2 = discBatch_.imageN2();
+  const Eigen::Matrix2d& h = cell.edges();
+  const Eigen::Matrix2d& L = cell.velocityGradient();
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 2; ++c) {
+      in.cellEdges[2 * r + c] = h(r, c);
+      in.velocityGradient[2 * r + c] = L(r, c);
+    }
+  }
 }
 
 bool ContactSolver::updatePeriodicNeighbors(bool moved) {

@@ -4,9 +4,13 @@
 
 namespace grainlab {
 
-void DiscPairBatch::build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling) {
+void DiscPairBatch::build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling,
+                          bool periodic) {
   const std::vector<PairState>& pairs = list.pairs();
   rolls_ = rolling != nullptr;
+  periodic_ = periodic;
+  imageN1_.clear();
+  imageN2_.clear();
   for (std::vector<double>* v : {&rollingHistory_, &rollingStiffness_, &rollingCompliance_, &rollingCapPerForce_,
                                  &rollingDamping_}) {
     v->clear();
@@ -58,6 +62,10 @@ void DiscPairBatch::build(const NeighborList& list, int particles, const std::ve
     dampN_.push_back(p.dampN);
     dampT_.push_back(p.dampT);
     history_.push_back(p.history.tangential);
+    if (periodic_) {
+      imageN1_.push_back(list.shifts()[k].n1);
+      imageN2_.push_back(list.shifts()[k].n2);
+    }
     if (rolls_) {
       const RollingResistance::Pair& r = (*rolling)[k];
       rollingHistory_.push_back(p.history.rolling);
@@ -83,6 +91,10 @@ void DiscPairBatch::build(const NeighborList& list, int particles, const std::ve
   fn_.assign(padded, 0);
   ft_.assign(padded, 0);
   overlap_.assign(padded, 0);
+  if (periodic_) {
+    imageN1_.resize(padded, 0);
+    imageN2_.resize(padded, 0);
+  }
   if (rolls_) {
     for (std::vector<double>* v : {&rollingHistory_, &rollingStiffness_, &rollingCompliance_, &rollingCapPerForce_,
                                    &rollingDamping_}) {

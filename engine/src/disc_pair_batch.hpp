@@ -23,9 +23,14 @@ namespace grainlab {
 class DiscPairBatch {
  public:
   /// Lays out the list's pairs as they are now (after a rebuild or a restore), with their state;
-  /// with `rolling` (each pair's rolling constants, in pair order), their rolling lanes too.
-  void build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling = nullptr);
+  /// with `rolling` (each pair's rolling constants, in pair order), their rolling lanes too;
+  /// in a periodic cell, each slot's image shift n (the list's shifts()).
+  void build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling = nullptr,
+             bool periodic = false);
   bool rolls() const { return rolls_; }
+  /// Periodic cell: each slot's image shift, n1 and n2 as doubles (null without a cell).
+  const double* imageN1() const { return periodic_ ? imageN1_.data() : nullptr; }
+  const double* imageN2() const { return periodic_ ? imageN2_.data() : nullptr; }
   /// Writes the slots' state into the list's pairs (those build() was given).
   void writeBack(std::vector<PairState>& pairs) const;
   /// Where the kernel reads and writes; the particles' arrays and the law are the caller's.
@@ -84,6 +89,8 @@ class DiscPairBatch {
   std::vector<int> pair_;  // the slot's pair in the list
   std::vector<double> dampN_, dampT_, history_, fn_, ft_, overlap_;
   bool rolls_ = false;
+  bool periodic_ = false;
+  std::vector<double> imageN1_, imageN2_;  // padding: n = 0
   std::vector<double> rollingHistory_, rollingStiffness_, rollingCompliance_, rollingCapPerForce_, rollingDamping_;
   std::vector<int> wallPairs_;
   std::vector<double> ends_;                  // fx fy torque 0: particle k's m-th at k × kEndsHeld + m, then the overflow

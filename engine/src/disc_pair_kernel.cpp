@@ -35,7 +35,9 @@ HWY_INLINE V reciprocalSqrt(D d, V x) {
 // or clump members (levers from their bodies' centroids).
 enum class Extra { None, Rolling, RollingKept, Members };
 
-template <bool kFrictional, Extra kExtra>
+// kPeriodic: the slots meet j's image in a periodic cell (DiscPairKernelInput::imageN1); the
+// other instantiations are the same code as without the flag.
+template <bool kFrictional, Extra kExtra, bool kPeriodic = false>
 void forces(const DiscPairKernelInput& in, int begin, int end) {
   constexpr bool kRolling = kExtra == Extra::Rolling, kMembers = kExtra == Extra::Members;
   constexpr bool kRollingHistory = kRolling || kExtra == Extra::RollingKept;
@@ -64,7 +66,12 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
     const auto I2 = hn::Add(I, I), J2 = hn::Add(J, J);
     const auto xi = hn::GatherIndex(d, in.position, I2), yi = hn::GatherIndex(d, in.position + 1, I2);
-    const auto xj = hn::GatherIndex(d, in.position, J2), yj = hn::GatherIndex(d, in.position + 1, J2);
+    auto xj = hn::GatherIndex(d, in.position, J2), yj = hn::GatherIndex(d, in.position + 1, J2);
+    if constexpr (kPeriodic) {  // j's image, x_j + h n
+      const auto n1 = hn::LoadU(d, in.imageN1 + s), n2 = hn::LoadU(d, in.imageN2 + s);
+      xj = hn::Add(xj, hn::MulAdd(hn::Set(d, in.cellEdges[0]), n1, hn::Mul(hn::Set(d, in.cellEdges[1]), n2)));
+      yj = hn::Add(yj, hn::MulAdd(hn::Set(d, in.cellEdges[2]), n1, hn::Mul(hn::Set(d, in.cellEdges[3]), n2)));
+    }
     const auto ri = hn::GatherIndex(d, in.radius, I), rj = hn::GatherIndex(d, in.radius, J);
     // touchDiscs()
     const auto dx = hn::Sub(xj, xi), dy = hn::Sub(yj, yi);
@@ -99,6 +106,11 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     const auto vxj = hn::GatherIndex(d, in.velocity, BJ2), vyj = hn::GatherIndex(d, in.velocity + 1, BJ2);
     const auto wi = hn::GatherIndex(d, in.spin, BI), wj = hn::GatherIndex(d, in.spin, BJ);
     auto dvx = hn::Sub(vxj, vxi), dvy = hn::Sub(vyj, vyi);
+    if constexpr (kPeriodic) {  // the image's affine velocity relative to i: L d, d = x_j + h n − x_i
+      const double* L = in.velocityGradient;
+      dvx = hn::Add(dvx, hn::MulAdd(hn::Set(d, L[0]), dx, hn::Mul(hn::Set(d, L[1]), dy)));
+      dvy = hn::Add(dvy, hn::MulAdd(hn::Set(d, L[2]), dx, hn::Mul(hn::Set(d, L[3]), dy)));
+    }
     // A member's lever L from its body's centroid adds ω × L = (−ω L_y, ω L_x) to its velocity.
     [[maybe_unused]] auto lxi = zero, lyi = zero, lxj = zero, lyj = zero;
     if constexpr (kMembers) {
@@ -194,16 +206,25 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
   }
 }
 
+template <bool kPeriodic>
+void discForces(const DiscPairKernelInput& in, int begin, int end) {
+  if (in.rollingHistory) {
+    if (in.frictional) forces<true, Extra::Rolling, kPeriodic>(in, begin, end);
+    else forces<false, Extra::RollingKept, kPeriodic>(in, begin, end);
+  } else {
+    if (in.frictional) forces<true, Extra::None, kPeriodic>(in, begin, end);
+    else forces<false, Extra::None, kPeriodic>(in, begin, end);
+  }
+}
+
 void DiscPairForces(const DiscPairKernelInput& in, int begin, int end) {
-  if (in.bodyI) {
+  if (in.bodyI) {  // clumps have no periodic cell
     if (in.frictional) forces<true, Extra::Members>(in, begin, end);
     else forces<false, Extra::Members>(in, begin, end);
-  } else if (in.rollingHistory) {
-    if (in.frictional) forces<true, Extra::Rolling>(in, begin, end);
-    else forces<false, Extra::RollingKept>(in, begin, end);
+  } else if (in.imageN1) {
+    discForces<true>(in, begin, end);
   } else {
-    if (in.frictional) forces<true, Extra::None>(in, begin, end);
-    else forces<false, Extra::None>(in, begin, end);
+    discForces<false>(in, begin, end);
   }
 }
 

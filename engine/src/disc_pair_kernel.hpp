@@ -63,6 +63,15 @@ struct DiscPairKernelInput {
   const std::int64_t* bodyI = nullptr;
   const std::int64_t* bodyJ = nullptr;
   const double* lever = nullptr;
+  // A periodic cell (docs/periodic-cell.md), null otherwise: per slot, j's image n (n1, n2 as
+  // doubles), so that j is met at x_j + h n, and that image moves with the cell's affine
+  // velocity, adding L (x_j + h n − x_i) to the relative velocity. The cell's edges h and its
+  // velocity gradient L (row-major: h11 h12 h21 h22) change every step, the slots' n only at a
+  // rebuild.
+  const double* imageN1 = nullptr;
+  const double* imageN2 = nullptr;
+  double cellEdges[4] = {};
+  double velocityGradient[4] = {};
 };
 
 /// Evaluates slots [begin, end) (block multiples): the pairs' state and their end forces.

@@ -24,7 +24,7 @@ double CellServo::rate(double stress, double dt) {
 
 CellStage::CellStage(std::string name, const CellLoading& loading, World& world, double duration, double sampleInterval)
     : name_(std::move(name)), loading_(loading), world_(world), duration_(duration),
-      sampleInterval_(sampleInterval > 0 ? sampleInterval : 0.005), startTime_(world.time()) {
+      sampleInterval_(sampleInterval > 0 ? sampleInterval : 0.005), startTime_(world.time()), turnStart_(startTime_) {
   if (!world_.periodicCell()) throw std::invalid_argument("a cell stage needs a world with a periodic cell");
   if (!(loading_.rateCap > 0) || !(loading_.crossings > 0)) {
     throw std::invalid_argument("a cell stage's rate cap and servo crossings must be positive");
@@ -59,7 +59,7 @@ const StressTensor& CellStage::measureStress() {
 void CellStage::control() {
   measureStress();
   if (const CellLoading::Rotation& r = loading_.rotation; r.q > 0) {
-    const double theta = r.angle0 + r.rate * (world_.time() - startTime_);
+    const double theta = r.angle0 + r.rate * std::max(0.0, world_.time() - turnStart_);
     servo11_.target = r.p + r.q * std::cos(2 * theta);
     servo22_.target = r.p - r.q * std::cos(2 * theta);
     servo12_.target = r.q * std::sin(2 * theta);
@@ -87,6 +87,7 @@ double CellStage::progress() const {
 void CellStage::persist(StateArchive& a) {
   a.section("cell stage");
   a(startTime_);
+  if (a.loading()) turnStart_ = startTime_;  // the default; a caller that moved it says so again
   a(measureEvery_);
   a(dtControl_);
   a(stepsDone_);

@@ -11,11 +11,13 @@
 // the error in τ against the packing's modulus M = k_n / 2 (as the membrane's servos), with
 // τ = `crossings` elastic-wave crossings of the cell (√A / √(M/ρ)); the integral only while
 // not capped (anti-windup). The stress is measured four times per τ.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "grainlab/scene.hpp"
 #include "grainlab/stage.hpp"
 #include "grainlab/stress.hpp"
 #include "grainlab/world.hpp"
@@ -81,6 +83,10 @@ class CellStage : public Stage {
   const Eigen::Matrix2d& strainRate() const { return D_; }
   /// Steps between stress measurements (and servo updates).
   int measureEvery() const { return measureEvery_; }
+  /// A rotation's axes turn from this time on (θ = θ0 + θ̇ (t − time), θ0 before it); by
+  /// default from the stage's start. Not saved by persist(): the caller that moves it says it
+  /// again after loading.
+  void turnAxesFrom(double time) { turnStart_ = time; }
 
  private:
   void control();
@@ -90,6 +96,7 @@ class CellStage : public Stage {
   World& world_;
   double duration_, sampleInterval_;
   double startTime_;
+  double turnStart_;
   int measureEvery_ = 1;
   double dtControl_ = 0;
   std::int64_t stepsDone_ = 0;
@@ -99,5 +106,10 @@ class CellStage : public Stage {
   std::vector<ContactRecord> contacts_;
   std::vector<unsigned char> inside_;
 };
+
+/// The scene's rotation stage in a cell (engine/src/cell_rotation_stage.cpp): the stress brought
+/// to (p, q) at θ0, then turned at constant p and q.
+std::unique_ptr<Stage> makeCellRotationStage(const StageSpec& spec, const OutputSpec& output, World& world,
+                                             double rateCap);
 
 }  // namespace grainlab

@@ -163,8 +163,22 @@ json demoPile() {
 // 0.25 /s, where the inertial number at 3 kPa stays below 1e-3, consolidated to 300 kPa with
 // friction, then sheared at constant σ11 as in the ring.
 // A path other than "biaxial" replaces the shearing as the ring's path presets do.
+// The cell's rotation is stress-controlled (the ring's turns the strain rate): the stress is
+// brought to q = 0.3 p at θ0 = 90° (vertical major stress; φ_mob = 17.5°, about half the
+// circular specimen's peak, docs/biaxial-test.md), then its axes make half a turn, which brings
+// the stress tensor back to where it started.
+json cellRotationStage(bool quick) {
+  return {{"type", "rotation"}, {"name", "rotation"}, {"mean_stress", 300e3}, {"deviatoric_stress", 90e3},
+          {"initial_direction_deg", 90.0}, {"total_rotation_deg", 180.0}, {"duration", quick ? 0.3 : 0.6}};
+}
+
 json periodicScene(const std::string& name, const std::string& path, const std::string& kind, bool quick) {
   json scene = path == "biaxial" ? paperScene(name, kind, quick) : pathScene(name, path, kind, quick);
+  if (path == "rotation") scene["stages"][2] = cellRotationStage(quick);
+  // A quick cell is wider than the quick ring's 0.06 m specimen: in a cell of 177 discs, about
+  // 13 diameters across, chains spanning the cell along the compression lock and collapse
+  // (docs/periodic-cell.md, "Presets", measured).
+  if (quick) scene["assembly"]["specimen_diameter"] = 0.11;
   scene["boundary"] = {{"type", "periodic"}};
   scene["stages"][0] = {{"type", "isotropic"}, {"name", "compaction"}, {"pressure", 3e3}, {"strain_rate", 0.25},
                         {"friction", 0.0}, {"max_time", 4.0}};
@@ -175,6 +189,7 @@ const std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& 
   static const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> presets{
       {"periodic-biaxial-circular", {"biaxial", "circular"}},
       {"periodic-biaxial-elongated-bedding-30", {"biaxial", "30"}},
+      {"periodic-rotation-circular", {"rotation", "circular"}},
       {"periodic-simple-shear-circular", {"simple-shear", "circular"}}};
   return presets;
 }

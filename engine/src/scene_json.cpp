@@ -105,14 +105,41 @@ StageSpec::Lateral parseLateral(JsonReader& r) {
   return lateral == "constant_volume" ? StageSpec::Lateral::ConstantVolume : StageSpec::Lateral::ConstantStress;
 }
 
-// The rotation's speed and length: two of rotation_rate_deg_per_s, total_rotation_deg and
-// duration; the third follows.
-void parseRotation(JsonReader& r, StageSpec& s) {
+// How the ring's rotation is driven: the strain-rate axes turn at a deviatoric strain rate.
+void parseRingRotationDrive(JsonReader& r, StageSpec& s) {
   if (!r.has("deviatoric_strain_rate")) {
     throw SceneError(r.fieldPath("deviatoric_strain_rate"), "a rotation stage needs a deviatoric_strain_rate (ε̇1 − ε̇3, 1/s)");
   }
   s.deviatoricStrainRate = r.number("deviatoric_strain_rate", 0, 0, kInf, true);
   s.pressure = r.number("mean_stress", 300e3, 0, kInf, true);
+}
+
+// How the cell's rotation is driven: the stress turns at constant p and q, and the strain rate
+// that follows is measured, so it takes a deviatoric stress instead of a strain rate.
+void parseCellRotationDrive(JsonReader& r, StageSpec& s) {
+  if (r.has("deviatoric_strain_rate")) {
+    throw SceneError(r.fieldPath("deviatoric_strain_rate"),
+                     "a rotation in a periodic cell is stress-controlled: give deviatoric_stress (q, Pa); the strain "
+                     "rate is measured");
+  }
+  if (!r.has("deviatoric_stress")) {
+    throw SceneError(r.fieldPath("deviatoric_stress"),
+                     "a rotation in a periodic cell needs the deviatoric stress q = (σ1 − σ2)/2 it holds, in Pa");
+  }
+  s.pressure = r.number("mean_stress", 300e3, 0, kInf, true);
+  s.deviatoricStress = r.number("deviatoric_stress", 0, 0, kInf, true);
+  if (s.deviatoricStress >= s.pressure) {
+    throw SceneError(r.fieldPath("deviatoric_stress"),
+                     "must be below mean_stress (" + std::to_string(s.pressure) +
+                         " Pa): a granular packing carries no tension, σ2 = p − q must stay positive");
+  }
+}
+
+// The rotation's drive (the ring's or the cell's), start and speed. Speed and length: two of
+// rotation_rate_deg_per_s, total_rotation_deg and duration; the third follows.
+void parseRotation(JsonReader& r, StageSpec& s, bool inCell) {
+  if (inCell) parseCellRotationDrive(r, s);
+  else parseRingRotationDrive(r, s);
   s.initialDirectionDeg = r.number("initial_direction_deg", 90, -kInf, kInf);
   const bool rate = r.has("rotation_rate_deg_per_s"), total = r.has("total_rotation_deg"), duration = r.has("duration");
   if (rate + total + duration < 2) {
@@ -179,7 +206,7 @@ double cyclicPathEstimate(const StageSpec& s) {
   return s.cycles * (s.strainAmplitude ? 4 * *s.strainAmplitude : 0.2);
 }
 
-StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
+StageSpec parseStage(const nlohmann::json& j, const std::string& path, bool inCell) {
   JsonReader r(j, path);
   StageSpec s;
   std::set<std::string> typeNames;
@@ -210,7 +237,7 @@ StageSpec parseStage(const nlohmann::json& j, const std::string& path) {
       s.targetAxialStrain = r.number("target_axial_strain", 0.2, 0, 0.5, true);
       s.lateral = parseLateral(r);
       break;
-    case StageSpec::Type::Rotation: parseRotation(r, s); break;
+    case StageSpec::Type::Rotation: parseRotation(r, s, inCell); break;
     case StageSpec::Type::Cyclic: parseCyclic(r, s); break;
     case StageSpec::Type::SimpleShear:
       if (!r.has("shear_rate")) throw SceneError(r.fieldPath("shear_rate"), "a simple_shear stage needs a shear_rate γ̇ in 1/s");
@@ -345,11 +372,14 @@ void refuseWhatACellCannotHold(const Scene& scene) {
 }
 
 // The cell's loading paths (periodic_stages.hpp): the membrane's isotropic, biaxial and
-// simple_shear in the cell; the others are the ring's only.
+// simple_shear in the cell, and the stress-controlled rotation; compaction and cyclic are the
+// ring's only.
 void refuseStageACellCannotRun(const StageSpec& s, const std::string& path) {
   using T = StageSpec::Type;
-  if (s.type == T::Free || s.type == T::Isotropic || s.type == T::Biaxial || s.type == T::SimpleShear) return;
-  throw SceneError(path + ".type", "a periodic cell runs free, isotropic, biaxial and simple_shear stages, not " +
+  if (s.type == T::Free || s.type == T::Isotropic || s.type == T::Biaxial || s.type == T::SimpleShear ||
+      s.type == T::Rotation)
+    return;
+  throw SceneError(path + ".type", "a periodic cell runs free, isotropic, biaxial, simple_shear and rotation stages, not " +
                                        std::string(toString(s.type)));
 }
 
@@ -411,7 +441,7 @@ Scene parseScene(const nlohmann::json& json) {
     if (!stages.is_array()) throw SceneError("stages", "must be an array");
     for (size_t k = 0; k < stages.size(); ++k) {
       const std::string path = "stages[" + std::to_string(k) + "]";
-      StageSpec s = parseStage(stages[k], path);
+      StageSpec s = parseStage(stages[k], path, scene.boundary.type == BoundarySpec::Type::Periodic);
       if (scene.boundary.type == BoundarySpec::Type::Periodic) refuseStageACellCannotRun(s, path);
       else if (s.type != StageSpec::Type::Free && scene.boundary.type != BoundarySpec::Type::Membrane) {
         throw SceneError(path + ".type", "a " + s.name + " stage loads through the boundary ring: set boundary.type to \"membrane\"");

@@ -49,25 +49,28 @@ def _geometry(contacts, particles, inside):
     return columns, np.ascontiguousarray(centroids), np.ascontiguousarray(flags, dtype=np.uint8)
 
 
-def stress(contacts, area, particles=None, inside=None):
+def stress(contacts, area, particles=None, inside=None, cell=None):
     """The contact stress σ_ij = (1/A) Σ_ends f_i l_j over the contact ends of the particles
     inside the specimen (force index first, compression positive). ``area``: the measured
     region's area (the series' `area` column in grainlab). ``particles``: a table with x, y and
     optionally boundary (boundary particles are outside); without it the centroids come from
     the branch vectors and every particle is inside. ``inside``: per-particle flags that
-    override both. Returns {"sigma11", "sigma22", "sigma12", "sigma21", "p", "q"}."""
+    override both. ``cell``: a periodic cell's h (2×2, columns the edges; Run.cell): each
+    branch vector then runs from the nearest image of its particle's centroid, so a contact
+    across an edge counts with the branch it acts through (``area`` is then det h).
+    Returns {"sigma11", "sigma22", "sigma12", "sigma21", "p", "q"}."""
     columns, centroids, flags = _geometry(contacts, particles, inside)
-    return _grainlab.contact_stress(columns, centroids, flags, float(area))
+    return _grainlab.contact_stress(columns, centroids, flags, float(area), cell)
 
 
-def anisotropy(contacts, particles=None, inside=None):
+def anisotropy(contacts, particles=None, inside=None, cell=None):
     """The anisotropy of contact normals, forces and branch vectors (paper Eqs. 2-4) by the
     second-order estimators of docs/micromechanics.md: a_c, theta_c_deg, a_n, theta_n_deg, a_t,
     theta_t_deg, a_w (moment equilibrium), a_ln, theta_ln_deg, a_lt, theta_lt_deg, f0, l0,
     a_w_direct, lt0_ratio, ends, contacts. Directions in degrees in [0, 180).
-    ``particles`` and ``inside`` as for stress()."""
+    ``particles``, ``inside`` and ``cell`` as for stress()."""
     columns, centroids, flags = _geometry(contacts, particles, inside)
-    return _grainlab.fabric(columns, centroids, flags)
+    return _grainlab.fabric(columns, centroids, flags, cell)
 
 
 def theta_sigma(stress=None, fabric=None, method="eq7"):

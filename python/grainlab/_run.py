@@ -12,11 +12,16 @@ from ._tables import from_columns, read_csv, series_array
 class Run:
     """One run's results. ``series`` is a numpy structured array with the columns of
     series.csv (NaN where a value was not measured); ``summary`` the keys of summary.json;
-    ``out`` the output directory, or None."""
+    ``out`` the output directory, or None. A run in a periodic cell (docs/periodic-cell.md)
+    has ``cell``, the cell's edge vectors at the end as a 2×2 array h (columns h1, h2, m), and
+    ``cell_series``, h at each row of ``series`` (samples × 2 × 2); both are None for a run in
+    the ring, and for a run read back with Run.load (the files do not hold h)."""
 
-    def __init__(self, series, summary, particles, contacts, out=None):
+    def __init__(self, series, summary, particles, contacts, out=None, cell=None, cell_series=None):
         self.series = series
         self.summary = summary
+        self.cell = cell
+        self.cell_series = cell_series
         self._particles = particles
         self._contacts = contacts
         self.out = out
@@ -156,4 +161,5 @@ def run(scene, out=None, progress=True):
         with open(os.path.join(out_dir, "summary.json")) as f:
             summary = json.load(f)
     return Run(series, summary, from_columns(result["particles"]),
-               from_columns(result["contacts"]), out=out_dir or None)
+               from_columns(result["contacts"]), out=out_dir or None,
+               cell=result["cell"], cell_series=result["cell_series"])

@@ -2,6 +2,8 @@
 // package turns dicts into it), arrays as numpy, results as dicts. The analysis functions
 // call the engine's own estimators (engine/analysis, engine/src/stress.cpp): no formula is
 // written twice.
+#include <optional>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -11,6 +13,7 @@
 #include "grainlab/analysis/stress_direction.hpp"
 #include "grainlab/errors.hpp"
 #include "grainlab/lammps/import.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/presets.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/stress.hpp"
@@ -68,6 +71,20 @@ analysis::FabricState fabricFromDict(const py::dict& d) {
 
 }  // namespace
 
+namespace {
+// A periodic cell from Python: None, or a 2×2 array h whose columns are the edges (Run.cell).
+std::optional<PeriodicCell> cellFromObject(const py::object& h) {
+  if (h.is_none()) return std::nullopt;
+  const auto a = py::cast<DoubleArray>(h);
+  if (a.ndim() != 2 || a.shape(0) != 2 || a.shape(1) != 2)
+    throw std::invalid_argument("cell: must be a 2x2 array h (columns the edges h1, h2) or None");
+  const auto v = a.unchecked<2>();
+  Eigen::Matrix2d m;
+  m << v(0, 0), v(0, 1), v(1, 0), v(1, 1);
+  return PeriodicCell(m);  // throws for a degenerate cell
+}
+}  // namespace
+
 PYBIND11_MODULE(_grainlab, m) {
   m.doc() = "grainlab's engine, run and analysis (use the grainlab package, not this module)";
 
@@ -104,11 +121,13 @@ PYBIND11_MODULE(_grainlab, m) {
 
   m.def(
       "contact_stress",
-      [](const py::dict& contacts, const DoubleArray& centroids, const FlagArray& inside, double area) {
+      [](const py::dict& contacts, const DoubleArray& centroids, const FlagArray& inside, double area,
+         const py::object& h) {
         const auto records = contactsFromColumns(contacts);
         const auto x = centroidsFromArray(centroids);
         const auto flags = flagsFromArray(inside);
-        const StressTensor s = contactStress(records, x, flags, area);
+        const auto cell = cellFromObject(h);
+        const StressTensor s = contactStress(records, x, flags, area, cell ? &*cell : nullptr);
         py::dict d;
         d["sigma11"] = s.s11;
         d["sigma22"] = s.s22;
@@ -118,16 +137,17 @@ PYBIND11_MODULE(_grainlab, m) {
         d["q"] = s.q();
         return d;
       },
-      py::arg("contacts"), py::arg("centroids"), py::arg("inside"), py::arg("area"));
+      py::arg("contacts"), py::arg("centroids"), py::arg("inside"), py::arg("area"), py::arg("cell") = py::none());
   m.def(
       "fabric",
-      [](const py::dict& contacts, const DoubleArray& centroids, const FlagArray& inside) {
+      [](const py::dict& contacts, const DoubleArray& centroids, const FlagArray& inside, const py::object& h) {
         const auto records = contactsFromColumns(contacts);
         const auto x = centroidsFromArray(centroids);
         const auto flags = flagsFromArray(inside);
-        return fabricToDict(analysis::measureFabric(records, x, flags));
+        const auto cell = cellFromObject(h);
+        return fabricToDict(analysis::measureFabric(records, x, flags, cell ? &*cell : nullptr));
       },
-      py::arg("contacts"), py::arg("centroids"), py::arg("inside"));
+      py::arg("contacts"), py::arg("centroids"), py::arg("inside"), py::arg("cell") = py::none());
   m.def(
       "theta_sigma_macro", [](const py::dict& s) { return analysis::thetaSigmaMacroDeg(stressFromDict(s)); },
       py::arg("stress"));

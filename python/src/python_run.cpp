@@ -9,6 +9,7 @@
 #include "grainlab/errors.hpp"
 #include "grainlab/observer_tee.hpp"
 #include "grainlab/output_writer.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/world.hpp"
@@ -22,9 +23,10 @@ class Collector : public RunObserver {
  public:
   explicit Collector(py::object progress) : progress_(std::move(progress)) {}
 
-  void onSample(const Sample& sample, const World&) override {
+  void onSample(const Sample& sample, const World& world) override {
     rows_.push_back(sample.values);
     stages_.push_back(sample.stage);
+    if (const PeriodicCell* cell = world.periodicCell()) cellRows_.push_back(cell->edges());
   }
 
   void onProgress(double fraction, std::string_view stage, const World&) override {
@@ -49,6 +51,7 @@ class Collector : public RunObserver {
 
   void onFinish(const RunSummary& summary, const World& world) override {
     summary_ = summaryJson(summary, world);
+    if (const PeriodicCell* cell = world.periodicCell()) finalCell_ = cell->edges();
     const auto x = world.positions();
     const auto v = world.velocities();
     for (int k = 0; k < world.size(); ++k) {
@@ -65,6 +68,14 @@ class Collector : public RunObserver {
       boundary_.push_back(world.boundaryFlags()[k] ? 1 : 0);
     }
     world.contacts(contacts_);
+    // j's centre as i meets it: in a periodic cell the nearest image, so lj is the branch
+    // vector the contact acts through (as contacts_final.csv writes it).
+    const PeriodicCell* cell = world.periodicCell();
+    for (const ContactRecord& c : contacts_) {
+      if (c.isWall()) jCentre_.emplace_back(std::nan(""), std::nan(""));
+      else if (cell) jCentre_.push_back(x[c.i] + cell->minimumImage(x[c.j] - x[c.i]));
+      else jCentre_.push_back(x[c.j]);
+    }
   }
 
   // Called with the GIL held, after the run.
@@ -85,6 +96,23 @@ class Collector : public RunObserver {
       for (py::ssize_t c = 0; c < cols; ++c) m(static_cast<py::ssize_t>(r), c) = rows_[r][static_cast<size_t>(c)];
     out["values"] = values;
 
+    // A periodic cell's edges h (columns h1, h2, m) at the end and at each sample; None for a ring.
+    out["cell"] = py::none();
+    out["cell_series"] = py::none();
+    if (finalCell_) {
+      py::array_t<double> h({2, 2});
+      auto hm = h.mutable_unchecked<2>();
+      for (py::ssize_t a = 0; a < 2; ++a)
+        for (py::ssize_t b = 0; b < 2; ++b) hm(a, b) = (*finalCell_)(a, b);
+      out["cell"] = h;
+      py::array_t<double> series({static_cast<py::ssize_t>(cellRows_.size()), py::ssize_t{2}, py::ssize_t{2}});
+      auto sm = series.mutable_unchecked<3>();
+      for (size_t r = 0; r < cellRows_.size(); ++r)
+        for (py::ssize_t a = 0; a < 2; ++a)
+          for (py::ssize_t b = 0; b < 2; ++b) sm(static_cast<py::ssize_t>(r), a, b) = cellRows_[r](a, b);
+      out["cell_series"] = series;
+    }
+
     // The keys of summary.json, as OutputWriter writes them.
     out["summary"] = py::module_::import("json").attr("loads")(summary_.dump());
 
@@ -104,11 +132,12 @@ class Collector : public RunObserver {
     std::vector<long long> ci, cj;
     std::vector<double> cols12[10];
     const double nan = std::nan("");
-    for (const ContactRecord& c : contacts_) {
+    for (size_t k = 0; k < contacts_.size(); ++k) {
+      const ContactRecord& c = contacts_[k];
       ci.push_back(c.i);
       cj.push_back(c.j);
       const Vec2 li = c.point - Vec2(px_[c.i], py_[c.i]);
-      const Vec2 lj = c.isWall() ? Vec2(nan, nan) : Vec2(c.point - Vec2(px_[c.j], py_[c.j]));
+      const Vec2 lj = c.isWall() ? Vec2(nan, nan) : Vec2(c.point - jCentre_[k]);
       const double row[10] = {c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.fn, c.ft,
                               li.x(),      li.y(),      lj.x(),       lj.y()};
       for (int k = 0; k < 10; ++k) cols12[k].push_back(row[k]);
@@ -128,12 +157,15 @@ class Collector : public RunObserver {
   std::optional<py::error_already_set> error_;
   std::vector<std::vector<double>> rows_;
   std::vector<std::string> stages_;
+  std::vector<Eigen::Matrix2d> cellRows_;    // h at each sample, for a run in a periodic cell
+  std::optional<Eigen::Matrix2d> finalCell_;
   nlohmann::json summary_;  // summary.json's content
   std::vector<long long> id_;
   std::vector<std::string> shape_;
   std::vector<double> px_, py_, angle_, vx_, vy_, spin_, radius_;
   std::vector<unsigned char> boundary_;
   std::vector<ContactRecord> contacts_;
+  std::vector<Vec2> jCentre_;  // per contact
 };
 
 }  // namespace

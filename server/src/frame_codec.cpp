@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab::server {
@@ -31,11 +32,18 @@ T get(const std::string& in, std::size_t at) {
 
 std::string encodeFrame(const World& world, std::vector<ContactRecord>& scratch) {
   world.contacts(scratch);
-  return encodeFrame(world.stepCount(), world.time(), world.positions(), world.angles(), scratch);
+  std::optional<CellEdges> cell;
+  if (const PeriodicCell* c = world.periodicCell()) {
+    const auto& h = c->edges();
+    cell = CellEdges{static_cast<float>(h(0, 0)), static_cast<float>(h(1, 0)), static_cast<float>(h(0, 1)),
+                     static_cast<float>(h(1, 1))};
+  }
+  return encodeFrame(world.stepCount(), world.time(), world.positions(), world.angles(), scratch, cell);
 }
 
 std::string encodeFrame(std::int64_t step, double time, std::span<const Vec2> positions,
-                        std::span<const double> angles, const std::vector<ContactRecord>& contacts) {
+                        std::span<const double> angles, const std::vector<ContactRecord>& contacts,
+                        std::optional<CellEdges> cell) {
   const auto n = positions.size();
 
   // Colour by the mean contact force magnitude on each particle; walls count for their
@@ -67,19 +75,22 @@ std::string encodeFrame(std::int64_t step, double time, std::span<const Vec2> po
     maxMean = std::max(maxMean, sum[i]);
   }
 
-  std::string out(frame::kHeaderBytes + n * frame::kParticleBytes + chains * frame::kContactBytes,
+  const std::size_t header = cell ? frame::kCellHeaderBytes : frame::kHeaderBytes;
+  std::string out(header + n * frame::kParticleBytes + chains * frame::kContactBytes,
                   '\0');
   std::size_t at = 0;
   std::memcpy(out.data(), frame::kMagic, 4);
   at = 4;
   put(out, at, frame::kVersion);
-  put(out, at, static_cast<std::uint16_t>(frame::kHeaderBytes));
+  put(out, at, static_cast<std::uint16_t>(header));
   put(out, at, step);
   put(out, at, time);
   put(out, at, static_cast<std::uint32_t>(n));
   put(out, at, static_cast<std::uint32_t>(chains));
   put(out, at, maxMean);
   put(out, at, maxContact);
+  if (cell)
+    for (float v : *cell) put(out, at, v);
 
   for (std::size_t i = 0; i < n; ++i) {
     put(out, at, static_cast<float>(positions[i].x()));
@@ -102,6 +113,8 @@ DecodedFrame decodeFrame(const std::string& bytes) {
   if (get<std::uint16_t>(bytes, 4) != frame::kVersion)
     throw std::invalid_argument("unknown frame version");
   const auto header = get<std::uint16_t>(bytes, 6);
+  if (header < frame::kHeaderBytes || bytes.size() < header)
+    throw std::invalid_argument("frame header size out of range");
   DecodedFrame f;
   f.step = get<std::int64_t>(bytes, 8);
   f.time = get<double>(bytes, 16);
@@ -112,6 +125,11 @@ DecodedFrame decodeFrame(const std::string& bytes) {
   if (bytes.size() != header + std::size_t{n} * frame::kParticleBytes +
                           std::size_t{m} * frame::kContactBytes)
     throw std::invalid_argument("frame size does not match its counts");
+  if (header >= frame::kCellHeaderBytes) {
+    CellEdges h;
+    for (std::size_t k = 0; k < 4; ++k) h[k] = get<float>(bytes, 40 + 4 * k);
+    f.cell = h;
+  }
   std::size_t at = header;
   f.particles.resize(std::size_t{n} * 4);
   for (auto& v : f.particles) v = get<float>(bytes, at), at += 4;

@@ -1,6 +1,6 @@
 // A periodic cell in scene JSON: what it accepts, and each refusal naming its field (the
 // box2d engine, walls, clumps, gravity, a cell without a size or with two, the ring's own
-// stages).
+// stages, a rotation driven as the ring's).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -75,13 +75,54 @@ TEST(PeriodicScene, RefusesWhatACellCannotHoldByField) {
   json compaction = cellOfDiscs();
   compaction["stages"][1] = {{"type", "compaction"}};
   EXPECT_EQ(refusedField(compaction), "stages[1].type");
-  json rotation = cellOfDiscs();
-  rotation["stages"][0] = {{"type", "cyclic"}, {"strain_amplitude", 0.01}, {"cycles", 1}};
-  EXPECT_EQ(refusedField(rotation), "stages[0].type");
+  json cyclic = cellOfDiscs();
+  cyclic["stages"][0] = {{"type", "cyclic"}, {"strain_amplitude", 0.01}, {"cycles", 1}};
+  EXPECT_EQ(refusedField(cyclic), "stages[0].type");
   // Keys of the cell are the cell's: a membrane has no size.
   json ring = cellOfDiscs();
   ring["boundary"] = {{"type", "membrane"}, {"size", {0.01, 0.01}}};
   EXPECT_EQ(refusedField(ring), "boundary.size");
+}
+
+json cellRotation() {
+  json scene = cellOfDiscs();
+  scene["stages"][2] = {{"type", "rotation"}, {"mean_stress", 2e5}, {"deviatoric_stress", 5e4},
+                        {"initial_direction_deg", 45}, {"rotation_rate_deg_per_s", 300}, {"duration", 0.2}};
+  return scene;
+}
+
+// The cell's rotation is stress-controlled: it holds p and q while the stress axes turn.
+TEST(PeriodicScene, ParsesTheCellsStressControlledRotation) {
+  const Scene scene = parseScene(cellRotation());
+  const StageSpec& s = scene.stages[2];
+  EXPECT_EQ(s.type, StageSpec::Type::Rotation);
+  EXPECT_EQ(s.pressure, 2e5);
+  EXPECT_EQ(s.deviatoricStress, 5e4);
+  EXPECT_EQ(s.deviatoricStrainRate, 0.0);
+  EXPECT_EQ(s.initialDirectionDeg, 45.0);
+  EXPECT_EQ(s.rotationRateDeg, 300.0);
+  EXPECT_EQ(s.duration, 0.2);
+}
+
+TEST(PeriodicScene, RefusesARotationDrivenAsTheRingsByField) {
+  json strainDriven = cellRotation();
+  strainDriven["stages"][2]["deviatoric_strain_rate"] = 1.0;
+  EXPECT_EQ(refusedField(strainDriven), "stages[2].deviatoric_strain_rate");
+  json noQ = cellRotation();
+  noQ["stages"][2].erase("deviatoric_stress");
+  EXPECT_EQ(refusedField(noQ), "stages[2].deviatoric_stress");
+  json tension = cellRotation();  // q = p would put σ2 at zero
+  tension["stages"][2]["deviatoric_stress"] = 2e5;
+  EXPECT_EQ(refusedField(tension), "stages[2].deviatoric_stress");
+  json noSpeed = cellRotation();
+  noSpeed["stages"][2].erase("duration");
+  EXPECT_EQ(refusedField(noSpeed), "stages[2].duration");
+  // The ring's rotation keeps its own drive: q is the cell's key.
+  json ring = cellRotation();
+  ring["boundary"] = {{"type", "membrane"}};
+  EXPECT_EQ(refusedField(ring), "stages[2].deviatoric_strain_rate");
+  ring["stages"][2]["deviatoric_strain_rate"] = 1.0;
+  EXPECT_EQ(refusedField(ring), "stages[2].deviatoric_stress");
 }
 
 TEST(PeriodicScene, PresetsAreCellScenes) {
@@ -89,6 +130,12 @@ TEST(PeriodicScene, PresetsAreCellScenes) {
     const Scene scene = parseScene(presetScene(name));
     EXPECT_EQ(scene.boundary.type, BoundarySpec::Type::Periodic) << name;
     EXPECT_EQ(scene.stages.back().type, StageSpec::Type::Biaxial) << name;
+  }
+  for (const char* name : {"periodic-rotation-circular", "periodic-rotation-circular-quick"}) {
+    const Scene scene = parseScene(presetScene(name));
+    EXPECT_EQ(scene.boundary.type, BoundarySpec::Type::Periodic) << name;
+    EXPECT_EQ(scene.stages.back().type, StageSpec::Type::Rotation) << name;
+    EXPECT_GT(scene.stages.back().deviatoricStress, 0) << name;
   }
 }
 

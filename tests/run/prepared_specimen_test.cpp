@@ -1,6 +1,6 @@
 // Prepare once, test many times: a run started from run A's end-of-consolidation checkpoint,
 // running A's own shearing stage, writes A's rows from there on byte for byte (DEM discs and
-// polygons, Box2D discs), and keeping the checkpoints changes nothing in a DEM run. A specimen
+// polygons, Box2D discs, discs in a periodic cell), and keeping the checkpoints changes nothing in a DEM run. A specimen
 // that is missing, unreadable, of another format version, or that does not fit the scene is
 // refused naming start_from's field, before anything is written.
 #include <gtest/gtest.h>
@@ -98,7 +98,8 @@ TEST_P(Branch, ShearingFromTheConsolidatedSpecimenRepeatsTheRunByteForByte) {
 INSTANTIATE_TEST_SUITE_P(Modes, Branch,
                          ::testing::Values(variant("DemDiscs", "circular-quick", "dem", 0.05),
                                            variant("DemPolygons", "elongated-bedding-30-quick", "dem", 0.01),
-                                           variant("Box2dDiscs", "circular-quick", "box2d", 0.03)),
+                                           variant("Box2dDiscs", "circular-quick", "box2d", 0.03),
+                                           variant("PeriodicCellDiscs", "periodic-biaxial-circular-quick", "dem", 0.03)),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // A DEM run that keeps its stages' ends runs as one that does not: saving reads the state only.

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "frame_codec.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run.hpp"
 #include "grainlab/world.hpp"
@@ -50,6 +52,62 @@ TEST(FrameCodec, EncodesParticlesAndCompressedContacts) {
 
   EXPECT_THROW(decodeFrame("nope"), std::invalid_argument);
   EXPECT_THROW(decodeFrame(bytes.substr(0, bytes.size() - 1)), std::invalid_argument);
+}
+
+TEST(FrameCodec, ARingRunsFrameHasTheVersion1HeaderAndNoCell) {
+  World world(Material{});
+  ParticleSpec p;
+  p.radius = 0.002;
+  world.addParticle(p);
+  std::vector<ContactRecord> scratch;
+  const auto bytes = encodeFrame(world, scratch);
+  std::uint16_t header;
+  std::memcpy(&header, bytes.data() + 6, 2);
+  EXPECT_EQ(header, frame::kHeaderBytes);  // byte for byte what clients before the cell read
+  EXPECT_FALSE(decodeFrame(bytes).cell.has_value());
+}
+
+TEST(FrameCodec, ACellRunsFrameCarriesTheCellsEdgesAfterTheVersion1Header) {
+  World world(Material{});
+  Eigen::Matrix2d h;
+  h << 0.03, 0.012, 0.001, 0.025;  // edges (0.03, 0.001) and (0.012, 0.025): tilted, not square
+  world.setPeriodicCell(h);
+  ParticleSpec p;
+  p.radius = 0.002;
+  p.position = Vec2(0.001, 0.01);  // crosses the left edge
+  world.addParticle(p);
+  p.position = Vec2(0.015, 0.012);
+  world.addParticle(p);
+  // Shear the cell so the edges sent are the current ones, not the ones it was built with.
+  Eigen::Matrix2d L;
+  L << 0, 2.0, 0, 0;
+  world.setCellVelocityGradient(L);
+  for (int k = 0; k < 50; ++k) world.step();
+  const auto& now = world.periodicCell()->edges();
+  ASSERT_GT(std::abs(now(0, 1) - h(0, 1)), 1e-6);
+
+  std::vector<ContactRecord> scratch;
+  const auto bytes = encodeFrame(world, scratch);
+  ASSERT_EQ(bytes.size(), frame::kCellHeaderBytes + 2 * frame::kParticleBytes);
+  const auto f = decodeFrame(bytes);
+  ASSERT_TRUE(f.cell.has_value());
+  EXPECT_EQ((*f.cell)[0], static_cast<float>(now(0, 0)));  // h1 x
+  EXPECT_EQ((*f.cell)[1], static_cast<float>(now(1, 0)));  // h1 y
+  EXPECT_EQ((*f.cell)[2], static_cast<float>(now(0, 1)));  // h2 x
+  EXPECT_EQ((*f.cell)[3], static_cast<float>(now(1, 1)));  // h2 y
+  // A reader of version 1 that knows nothing of the cell finds the particles where the header
+  // size says they start.
+  std::uint16_t header;
+  std::memcpy(&header, bytes.data() + 6, 2);
+  float x1;
+  std::memcpy(&x1, bytes.data() + header + frame::kParticleBytes, 4);
+  EXPECT_EQ(x1, static_cast<float>(world.positions()[1].x()));
+  EXPECT_EQ(f.particles[4], x1);
+  // A header claiming to be shorter than version 1's is refused, not read past.
+  auto broken = bytes;
+  const std::uint16_t tiny = 20;
+  std::memcpy(broken.data() + 6, &tiny, 2);
+  EXPECT_THROW(decodeFrame(broken), std::invalid_argument);
 }
 
 TEST(FrameCodec, AClumpsShapeIsItsDiscsAboutItsCentroid) {

@@ -1,7 +1,7 @@
 // The particle view's panel: colour and chain controls, the legend and the canvas.
 import { h, replaceChildren } from './dom.js';
 import { forcePerMetre } from './format.js';
-import { ParticleView } from './particle_view.js';
+import { CELL_STROKE, ParticleView } from './particle_view.js';
 import { prepareShapes } from './particle_shapes.js';
 import {
   BOUNDARY_FILL, CHAIN_COLOUR, FORCE_PALETTE, ORIENTATION_PALETTE, gradientCss,
@@ -55,7 +55,9 @@ export class ParticlePanel {
       h('span', {}, byForce ? '0' : '0°'),
       h('span', { class: 'ramp', style: { background: gradientCss(byForce ? FORCE_PALETTE : ORIENTATION_PALETTE) } }),
       h('span', {}, byForce ? forcePerMetre(max) : '180°'),
-      h('span', { class: 'swatch', style: { background: BOUNDARY_FILL } }), 'boundary (membrane)',
+      ...(this.frame?.cell
+        ? [h('span', { class: 'swatch', style: { background: CELL_STROKE } }), 'periodic cell (images of edge-crossing particles drawn inside it)']
+        : [h('span', { class: 'swatch', style: { background: BOUNDARY_FILL } }), 'boundary (membrane)']),
       h('span', { class: 'swatch', style: { background: CHAIN_COLOUR } }),
       `chain: fₙ up to ${forcePerMetre(this.frame?.maxContactForce ?? 0)}`);
   }

@@ -8,7 +8,13 @@
 // is filled and outlined in paths of at most PATH_CHUNK shapes; chains likewise by width
 // class, with butt caps (round caps doubled their cost). tests/web/render_perf_test.mjs
 // measures 2,500 polygons against 20 frames/s.
+//
+// A run in a periodic cell (a frame with `cell`): the cell's outline is drawn, everything is
+// clipped to it, each particle is drawn wrapped into the cell and, if it crosses an edge, its
+// images on the other sides too (web/js/cell_images.js); a chain across an edge is drawn to the
+// other particle's nearest image, from both ends. Nothing is drawn outside the cell.
 import { CLUMP, DISC } from './particle_shapes.js';
+import { cellCorners, nearestImage, placeInCell } from './cell_images.js';
 import {
   BOUNDARY_FILL, BOUNDARY_STROKE, CHAIN_COLOUR, FORCE_PALETTE, ORIENTATION_PALETTE,
 } from './colour_scales.js';
@@ -16,6 +22,7 @@ import {
 const CHAIN_CLASSES = 10;
 const PATH_CHUNK = 48;  // shapes or chain lines per path: see above
 const OUTLINE_MIN_PIXELS = 2.5;  // particles smaller than this on screen are filled only
+export const CELL_STROKE = '#1f5f8b';
 
 export class ParticleView {
   /** @param {HTMLCanvasElement} canvas */
@@ -24,6 +31,7 @@ export class ParticleView {
     this.ctx = canvas.getContext('2d', { alpha: false });
     this.shapes = null;
     this.frame = null;
+    this.placed = null;
     this.colourMode = 'force';
     this.showChains = true;
     this.view = null;  // {cx, cy, scale}: world point at the canvas centre, pixels per metre
@@ -51,12 +59,28 @@ export class ParticleView {
     const sorted = Array.from(shapes.radius).sort((a, b) => a - b);
     this.typicalRadius = sorted[Math.floor(sorted.length / 2)] ?? 0;
     this.view = null;
+    this.place();
     this.requestDraw();
+  }
+
+  /** Where a cell's particles and their images are drawn, once per frame (null: no cell). */
+  place() {
+    const frame = this.frame;
+    this.placed = frame?.cell && this.shapes && frame.count === this.shapes.count
+      ? placeInCell(frame.cell, frame.particles, frame.count, this.shapes.radius) : null;
+    if (this.placed) {
+      this.canvas.dataset.cell = cellCorners(frame.cell).join(',');
+      this.canvas.dataset.cellImages = String(this.placed.images.length / 3);
+    } else {
+      delete this.canvas.dataset.cell;
+      delete this.canvas.dataset.cellImages;
+    }
   }
 
   setFrame(frame) {
     if (this.shapes && frame.count !== this.shapes.count) return;  // shapes of another run
     this.frame = frame;
+    this.place();
     this.canvas.dataset.step = String(frame.step);
     this.canvas.dataset.particles = String(frame.count);
     this.requestDraw();
@@ -97,11 +121,18 @@ export class ParticleView {
     }
   }
 
-  /** Frames the whole specimen. */
+  /** Frames the whole specimen (a periodic cell: its outline). */
   fit() {
     const { particles, count } = this.frame;
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-    for (let i = 0; i < count; i++) {
+    if (this.frame.cell) {
+      const c = cellCorners(this.frame.cell);
+      for (let k = 0; k < 8; k += 2) {
+        minX = Math.min(minX, c[k]); maxX = Math.max(maxX, c[k]);
+        minY = Math.min(minY, c[k + 1]); maxY = Math.max(maxY, c[k + 1]);
+      }
+    }
+    for (let i = 0; i < count && !this.frame.cell; i++) {
       const r = this.shapes.radius[i];
       const x = particles[4 * i], y = particles[4 * i + 1];
       minX = Math.min(minX, x - r); maxX = Math.max(maxX, x + r);
@@ -132,9 +163,31 @@ export class ParticleView {
     const k = this.view.scale * ratio;  // device pixels per metre
     // World coordinates with y up: the path is built in metres and the canvas scales it.
     ctx.setTransform(k, 0, 0, -k, width / 2 - k * this.view.cx, height / 2 + k * this.view.cy);
+    // The world-to-pixel map (CSS pixels, y down), for tests and tools that read the picture.
+    this.canvas.dataset.view = `${this.view.cx},${this.view.cy},${this.view.scale}`;
     this.drawWalls(ctx, k);
+    if (this.placed) {
+      ctx.save();
+      this.traceCell(ctx);
+      ctx.clip();
+    }
     this.drawParticles(ctx, k);
     if (this.showChains) this.drawChains(ctx, k);
+    if (this.placed) {
+      ctx.restore();
+      this.traceCell(ctx);
+      ctx.lineWidth = 2 / k;
+      ctx.strokeStyle = CELL_STROKE;
+      ctx.stroke();
+    }
+  }
+
+  traceCell(ctx) {
+    const c = cellCorners(this.frame.cell);
+    ctx.beginPath();
+    ctx.moveTo(c[0], c[1]);
+    for (let a = 2; a < 8; a += 2) ctx.lineTo(c[a], c[a + 1]);
+    ctx.closePath();
   }
 
   drawWalls(ctx, k) {
@@ -180,6 +233,10 @@ export class ParticleView {
     const order = this.order;
     for (let i = 0; i < count; i++) order[start[bucket[i]]++] = i;
 
+    // A cell's images, grouped by their particle's bucket: drawn in the same paths.
+    const placed = this.placed;
+    const imagesOf = placed ? new Array(bucketCount).fill(null).map(() => []) : null;
+    if (placed) for (let a = 0; a < placed.images.length; a += 3) imagesOf[bucket[placed.images[a]]].push(a);
     const outline = this.typicalRadius * k >= OUTLINE_MIN_PIXELS;
     ctx.lineWidth = 0.8 / k;
     ctx.lineJoin = 'round';
@@ -189,15 +246,31 @@ export class ParticleView {
       for (let from = sizes[b]; from < sizes[b + 1]; from += PATH_CHUNK) {
         ctx.beginPath();
         const to = Math.min(sizes[b + 1], from + PATH_CHUNK);
-        for (let n = from; n < to; n++) this.tracePath(ctx, order[n], particles);
+        for (let n = from; n < to; n++) {
+          const i = order[n];
+          if (placed) this.tracePath(ctx, i, particles, placed.x[i], placed.y[i]);
+          else this.tracePath(ctx, i, particles, particles[4 * i], particles[4 * i + 1]);
+        }
         ctx.fill();
         if (outline || b === boundaryBucket) ctx.stroke();
+      }
+      if (!placed) continue;
+      const images = imagesOf[b], all = placed.images;
+      for (let from = 0; from < images.length; from += PATH_CHUNK) {
+        ctx.beginPath();
+        const to = Math.min(images.length, from + PATH_CHUNK);
+        for (let n = from; n < to; n++) {
+          const a = images[n];
+          this.tracePath(ctx, all[a], particles, all[a + 1], all[a + 2]);
+        }
+        ctx.fill();
+        if (outline) ctx.stroke();
       }
     }
   }
 
-  tracePath(ctx, i, particles) {
-    const x = particles[4 * i], y = particles[4 * i + 1];
+  /** Particle i's outline with its centroid at (x, y). */
+  tracePath(ctx, i, particles, x, y) {
     const shapes = this.shapes;
     if (shapes.kind[i] === DISC) {
       const r = shapes.radius[i];
@@ -224,7 +297,8 @@ export class ParticleView {
   }
 
   drawChains(ctx, k) {
-    const { particles, contactCount, contactIndices, contactForces, maxContactForce } = this.frame;
+    const { particles, contactCount, contactIndices, contactForces, maxContactForce, cell } = this.frame;
+    const placed = this.placed;
     if (!contactCount || !(maxContactForce > 0)) return;
     // The strongest chain is as wide as 0.7 of a typical particle radius on screen.
     const widest = Math.max(2, 0.7 * this.typicalRadius * k);
@@ -239,8 +313,20 @@ export class ParticleView {
         const f = contactForces[3 * n + 2] / maxContactForce;
         if (f <= low || f > high) continue;
         const i = contactIndices[3 * n], j = contactIndices[3 * n + 1];
-        ctx.moveTo(particles[4 * i], particles[4 * i + 1]);
-        ctx.lineTo(particles[4 * j], particles[4 * j + 1]);
+        if (placed) {
+          // To j's nearest image, and from j to i's: across an edge both halves show in the cell.
+          const xi = placed.x[i], yi = placed.y[i], xj = placed.x[j], yj = placed.y[j];
+          const [dx, dy] = nearestImage(cell, xj - xi, yj - yi);
+          ctx.moveTo(xi, yi);
+          ctx.lineTo(xi + dx, yi + dy);
+          if (Math.abs(xi + dx - xj) + Math.abs(yi + dy - yj) > 1e-9) {
+            ctx.moveTo(xj, yj);
+            ctx.lineTo(xj - dx, yj - dy);
+          }
+        } else {
+          ctx.moveTo(particles[4 * i], particles[4 * i + 1]);
+          ctx.lineTo(particles[4 * j], particles[4 * j + 1]);
+        }
         if (++lines % PATH_CHUNK === 0) {
           ctx.stroke();
           ctx.beginPath();

@@ -27,10 +27,10 @@ export function getPath(object, path) {
 export function setPath(object, path, value) {
   const parts = parsePath(path);
   let at = object;
-  for (const part of parts.slice(0, -1)) {
+  for (const [k, part] of parts.slice(0, -1).entries()) {
     if (at[part] === null || typeof at[part] !== 'object') {
       if (value === undefined) return;
-      at[part] = {};
+      at[part] = typeof parts[k + 1] === 'number' ? [] : {};  // "boundary.size[0]": a list
     }
     at = at[part];
   }
@@ -130,6 +130,10 @@ function applyPath(scene, name) {
   scene.stages[k] = stage;
 }
 const hasAssembly = (scene) => Boolean(scene.assembly);
+// A periodic cell (docs/periodic-cell.md): an assembly's cell is the square its particles are
+// placed in; explicit particles need the cell's size.
+const periodic = (scene) => scene.boundary?.type === 'periodic';
+const explicitCell = (scene) => periodic(scene) && !scene.assembly;
 // Clumps share the elongated polygons' sizes, aspect ratio and orientation keys.
 const elongated = (scene) => scene.assembly?.shape === 'elongated' || scene.assembly?.shape === 'clump';
 
@@ -293,6 +297,20 @@ export const SCENE_FIELDS = [
   { key: 'target_shear_strain', label: 'Final shear strain γ', unit: '%', kind: 'number', factor: 0.01, paths: stagePaths(['simple_shear'], 'target_shear_strain') },
   { section: 'Specimen' },
   {
+    key: 'boundary', label: 'Boundary', kind: 'select', paths: fixed('boundary.type'),
+    options: [['membrane', 'membrane ring (the paper)'], ['periodic', 'periodic cell'], ['none', 'none']], fallback: 'none',
+    hint: 'periodic: no boundary, the particles fill a cell that tiles the plane; its own stages are isotropic, biaxial, simple shear (docs/periodic-cell.md)',
+  },
+  ...[0, 1].map((k) => ({
+    key: `cell_${k ? 'height' : 'width'}`, label: `Cell ${k ? 'height' : 'width'}`, unit: 'mm', kind: 'number', factor: 1e-3,
+    paths: fixed(`boundary.size[${k}]`), visible: explicitCell,
+    hint: 'explicit particles only: an assembly\'s cell is the square its particles are placed in',
+  })),
+  {
+    key: 'rate_cap', label: 'Strain-rate cap', unit: '1/s', kind: 'number', paths: fixed('boundary.rate_cap'), visible: periodic,
+    hint: 'the fastest strain rate the biaxial and simple-shear servos may command; empty: 3',
+  },
+  {
     key: 'representation', label: 'Shape fidelity', kind: 'select', paths: (scene) => (scene.assembly ? ['assembly'] : []),
     options: [['custom', 'custom'], ...REPRESENTATIONS], display: sceneRepresentation, apply: applyRepresentation,
     figures: shapeFidelityFigures, hint: 'particle shape by what it costs and how far it moves the results from the hexagons\' (docs/shape-fidelity.md)',
@@ -379,7 +397,9 @@ export function applyValue(field, scene, text) {
 /** The field whose paths include the API's error field ("material.friction"), or null. */
 export function fieldForPath(scene, path) {
   if (!path) return null;
-  return SCENE_FIELDS.find((field) => field.paths && field.paths(scene).includes(path)) ?? null;
+  // An error about a list ("boundary.size") belongs to the field of its first element.
+  return SCENE_FIELDS.find((field) => field.paths && field.paths(scene).includes(path)) ??
+    SCENE_FIELDS.find((field) => field.paths && field.paths(scene).some((p) => p.startsWith(`${path}[`))) ?? null;
 }
 
 /** One line about a preset's scene: particles, specimen, stages. */

@@ -40,7 +40,11 @@ struct StageSpec {
   /// rotation: the one of rotation_rate_deg_per_s, total_rotation_deg and duration that the
   /// parser derived from the other two (not a field the scene gave)
   std::string rotationDerivedField;
-  double initialDirectionDeg = 90;///< rotation: θ_ε̇ at the start (90° = vertical compression)
+  double initialDirectionDeg = 90;///< rotation: θ_ε̇ at the start (90° = vertical compression);
+                                  ///< in a periodic cell the major principal stress direction θσ
+  /// rotation in a periodic cell: the deviatoric stress q = ½(σ1 − σ2) held while the stress
+  /// axes turn, Pa (the cell's rotation is stress-controlled; 0 for the ring's)
+  double deviatoricStress = 0;
   std::optional<double> strainAmplitude;  ///< cyclic: reverse at axial strain ±amplitude
   std::optional<std::pair<double, double>> qOverPLimits;  ///< cyclic: or at these (σ22−σ11)/(σ22+σ11)
   int cycles = 1;                 ///< cyclic: a cycle is up to the upper limit and down to the lower

@@ -5,7 +5,10 @@
 //                               follow the centroids as extra points);
 //   DIR/vtk/contacts_NNNN.vtp   one line per contact, from centroid i to centroid j (to the
 //                               contact point for a wall);
-//   DIR/vtk/run.pvd             the frames with their simulation times.
+//   DIR/vtk/cell_NNNN.vtp       a run in a periodic cell: the cell's outline, a closed line
+//                               through 0, h1, h1 + h2, h2 (cell data h1, h2, area); a contact
+//                               across an edge is drawn to the image of j that i touches;
+//   DIR/vtk/run.pvd             the frames with their simulation times (cell.pvd: the outlines).
 // VTK XML PolyData with raw appended binary data (little-endian, UInt64 block headers).
 // A frame is written at every K-th sample and at the end. run.pvd is rewritten after the
 // first frame, then at most every few seconds, and at the end: ParaView can open a run that

@@ -122,4 +122,15 @@ MeanInterval axialMeanInterval(const std::vector<double>& thetasDeg) {
   return m;
 }
 
+MeanInterval axialMeanIntervalNear(const std::vector<double>& thetasDeg, double near) {
+  MeanInterval m = axialMeanInterval(thetasDeg);
+  const double shift = 180.0 * std::round((near - m.mean) / 180.0);
+  if (std::isfinite(shift)) {
+    m.mean += shift;
+    m.low += shift;
+    m.high += shift;
+  }
+  return m;
+}
+
 }  // namespace grainlab::report

@@ -117,18 +117,6 @@ std::optional<RunRecord> load(const fs::path& path) {
   }
 }
 
-// The axial mean with its interval, shifted by whole turns of 180° to lie within 90° of `near`.
-report::MeanInterval axialMeanNear(const std::vector<double>& values, double near) {
-  report::MeanInterval m = report::axialMeanInterval(values);
-  const double shift = 180.0 * std::round((near - m.mean) / 180.0);
-  if (std::isfinite(shift)) {
-    m.mean += shift;
-    m.low += shift;
-    m.high += shift;
-  }
-  return m;
-}
-
 std::string axisOf(const Representation& r) {
   switch (r.shape) {
     case Shape::Hexagons: return "reference";
@@ -252,8 +240,8 @@ ShapeStudy runShapeStudy(const ShapeStudyOptions& opt, std::ostream* progress) {
         // θσ lies near the vertical (90°) in a biaxial test, ω near 0: each mean is shown near its own.
         const double centre = qu.name.starts_with("theta_sigma_") ? 90.0 : 0.0;
         const report::MeanInterval refMean =
-            qu.axial ? axialMeanNear(referenceValues, centre) : report::meanInterval(referenceValues);
-        const report::MeanInterval mean = qu.axial ? axialMeanNear(values, refMean.mean) : report::meanInterval(values);
+            qu.axial ? report::axialMeanIntervalNear(referenceValues, centre) : report::meanInterval(referenceValues);
+        const report::MeanInterval mean = qu.axial ? report::axialMeanIntervalNear(values, refMean.mean) : report::meanInterval(values);
         const tradeoff::BiasEstimate e =
             isReference ? tradeoff::BiasEstimate{} : tradeoff::unpairedBias(values, referenceValues, qu.tolerance, qu.axial);
         table.addRow({size, a, r.name(), representationPreset(r, a, opt.quick), r.clumpDiscs,

@@ -54,4 +54,25 @@ PathSpeeds measurePathSpeeds(const Scene& scene, int steps, int repeats, int thr
 std::vector<PileSpeed> measureInTurn(const std::vector<Scene>& scenes, int steps, int repeats, int threads,
                                      std::ostream* progress);
 
+/// The periodic pile (periodicPileScene) against the disc pile it copies, in one process: the
+/// pile settles, its bulk solid fraction is measured (the discs whose centres lie in the
+/// middle half of its width and the 15-65 % of its height, over that window's area); the
+/// cell's discs are compressed isotropically to that fraction and left to rest; then the cell
+/// shears steadily at `shearRate` (1/s, v₁ = γ̇ x₂) while the two are timed in turn, `repeats`
+/// × `steps` steps each, on the default contact path.
+struct CellSpeeds {
+  PileSpeed pile, cell;
+  double solidFraction = 0;  ///< the settled pile's bulk fraction, and the cell's
+};
+CellSpeeds measureCellAgainstPile(const Scene& pile, const Scene& cell, double shearRate, int steps, int repeats,
+                                  int threads, std::ostream* progress);
+
+/// One settled pile timed on one thread and on `threads` in turn (1, N, 1, …: both see the same
+/// load): the pile settles once on `threads` threads and is copied, state and contact history,
+/// into a one-thread world (the two then step the same bits), `repeats` × `steps` steps each.
+struct ThreadSpeeds {
+  PileSpeed serial, threaded;
+};
+ThreadSpeeds measureThreadScaling(const Scene& scene, int threads, int steps, int repeats, std::ostream* progress);
+
 }  // namespace grainlab::bench

@@ -64,4 +64,8 @@ int seedsToExclude(double mean, double sd, double threshold);
 /// interval is the whole period, mean ∓ 90°. low and high are not wrapped (low ≤ mean ≤ high).
 MeanInterval axialMeanInterval(const std::vector<double>& thetasDeg);
 
+/// axialMeanInterval shifted by whole turns of 180° so that its mean lies within 90° of `near`
+/// (θσ near 90° in a biaxial test, ω near 0).
+MeanInterval axialMeanIntervalNear(const std::vector<double>& thetasDeg, double near);
+
 }  // namespace grainlab::report
