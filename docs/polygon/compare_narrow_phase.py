@@ -5,7 +5,8 @@ Usage: compare_narrow_phase.py BEFORE_ROOT AFTER_ROOT
 Each root holds one `grainlab sweep` output per preset (runs/<id>/series.csv, summary.json),
 as scripts in docs/polygon-contacts.md make them. For each preset it prints, before and after,
 the mean and 95% t-interval over seeds of: peak φ_mob, the void ratio after consolidation and
-at 20% axial strain, and a_c at 5% and 20% axial strain; and Welch's t for the difference.
+at 20% axial strain, a_c and the non-coaxiality ω (omega_macro_deg) at 5% and 20% axial strain;
+and Welch's t for the difference.
 """
 import csv, json, math, os, sys
 from statistics import mean, stdev
@@ -37,6 +38,8 @@ def metrics(run_dir):
         "e at 20%": at_strain(rows, "void_ratio", 0.20),
         "a_c at 5%": at_strain(rows, "a_c", 0.05),
         "a_c at 20%": at_strain(rows, "a_c", 0.20),
+        "omega at 5% (deg)": at_strain(rows, "omega_macro_deg", 0.05),
+        "omega at 20% (deg)": at_strain(rows, "omega_macro_deg", 0.20),
     }
 
 def ensemble(root, preset):

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "affine_drift.hpp"
+#include "grainlab/simd_path.hpp"
 #include "leapfrog.hpp"
 #include "timestep_bounds.hpp"
 #include "worker_pool.hpp"
@@ -67,13 +68,15 @@ void DemSolver::computeForces(double dt) {
 // (neighbour list, narrow phase, force law) give the forces for the next.
 void DemSolver::step(double dt, std::int64_t) {
   auto t0 = Clock::now();
+  // The wide path advances polygons' rotations incrementally; the baseline takes sincos.
+  const bool incremental = simdPath() == SimdPath::Wide;
   if (particles_.cell) {
     // The periodic cell's step: its edges, then each particle, by the same map I + L dt.
     particles_.cell->advance(dt);
     contacts_.cellAdvanced();
     const Eigen::Matrix2d L = particles_.cell->velocityGradient();
     forEachParticleRange([&](int begin, int end) {
-      leapfrogAdvance(particles_, dt, begin, end);
+      leapfrogAdvance(particles_, dt, begin, end, incremental);
       affineDrift(particles_, L, dt, begin, end);
       if (contacts_.movedOutOfSkin(begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
     });
@@ -83,7 +86,7 @@ void DemSolver::step(double dt, std::int64_t) {
     return;
   }
   forEachParticleRange([&](int begin, int end) {
-    leapfrogAdvance(particles_, dt, begin, end);
+    leapfrogAdvance(particles_, dt, begin, end, incremental);
     if (!members_ && contacts_.movedOutOfSkin(begin, end)) neighborsOutdated_.store(true, std::memory_order_relaxed);
   });
   auto t1 = Clock::now();

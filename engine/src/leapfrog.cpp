@@ -2,9 +2,11 @@
 
 #include <cmath>
 
+#include "incremental_rotation.hpp"
+
 namespace grainlab {
 
-void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end) {
+void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool incrementalRotation) {
   // Local pointers: through the vectors, every store would make the compiler reload them.
   Vec2* __restrict x = particles.position.data();
   Vec2* __restrict v = particles.velocity.data();
@@ -19,10 +21,15 @@ void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end) {
     w[k] += tau[k] * (invInertia[k] * dt);
     x[k] += v[k] * dt;
     if (w[k] != 0) {
-      angle[k] += w[k] * dt;
+      const double turn = w[k] * dt;
+      angle[k] += turn;
       // Only polygons' and clumps' contacts depend on their orientation: a disc's rotation is kept in
       // its angle alone (sincos was a fifth of a disc pile's step).
-      if (particles.shape[k] != ShapeKind::Disc) ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);
+      if (incrementalRotation && particles.shape[k] == ShapeKind::Polygon) {
+        advanceRotation(particles.cosAngle[k], particles.sinAngle[k], turn, angle[k]);
+      } else if (particles.shape[k] != ShapeKind::Disc) {
+        ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);
+      }
     }
     f[k] = particles.bodyForce(k);
     tau[k] = 0;

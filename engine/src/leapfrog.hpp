@@ -6,7 +6,9 @@ namespace grainlab {
 
 /// Kick and drift particles [begin, end) by dt from the forces on them, then start their next
 /// force from the body force: one pass, so each particle's data is loaded once (three loops
-/// over the particles took a fifth of a disc pile's step).
-void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end);
+/// over the particles took a fifth of a disc pile's step). With `incrementalRotation` (the wide
+/// path) a polygon's cos and sin are advanced by its turn (incremental_rotation.hpp) instead of
+/// taken from its angle by sincos.
+void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool incrementalRotation = false);
 
 }  // namespace grainlab

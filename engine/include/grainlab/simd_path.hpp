@@ -2,7 +2,7 @@
 // Which instruction path the contact step takes. The baseline is the scalar code every
 // x86-64 runs; the wide path evaluates a discs-only scene's contacts several per instruction,
 // on the widest instruction set this CPU has (chosen at run time, so one binary runs
-// anywhere). The wide path is the default where it is built (it is faster on the disc pile:
+// anywhere), and advances polygons' cos and sin by each step's turn instead of by sincos. The wide path is the default where it is built (it is faster on the disc pile:
 // docs/benchmarks.md); GRAINLAB_SIMD=baseline, or a build with the CMake option
 // GRAINLAB_SIMD=OFF, forces the baseline. The two differ at rounding level; each gives the
 // same bits on every run and with any number of threads.
