@@ -253,8 +253,10 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
     // the images' affine velocity included (docs/periodic-cell.md, "Against LAMMPS").
     in << "# The scene's constant-volume biaxial stage: L = diag(" << num(rate11) << ", " << num(rate22)
        << ") 1/s, true strain rates.\n"
-       << "fix             deform all deform 1 x trate " << num(rate11) << " y trate " << num(rate22)
-       << " xy trate " << num(rate11) << " remap v\n";
+       << "fix             deform all deform 1 x trate " << num(rate11) << " y trate " << num(rate22);
+    // LAMMPS refuses trate on a zero tilt (which stays zero: ḣ12 = L11 h12).
+    if ((*s.cell)(0, 1) != 0) in << " xy trate " << num(rate11);
+    in << " remap v\n";
   }
   if (options.deform) {
     const auto& d = *options.deform;
