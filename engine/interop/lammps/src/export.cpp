@@ -175,7 +175,11 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
   }
   const double meanMass = totalMass / n, meanRadius = sumRadius / n;
   // The mean pair (m* = m̄/2) and the mean disc on a wall (m* = m̄): exact for equal discs.
-  const GranularParameters g = granularParameters(s.material, 0.5 * meanMass, meanMass);
+  // The friction the exported stages run with: the scene's. A specimen prepared by a stage with
+  // its own friction (a frictionless consolidation) still carries that stage's value.
+  Material material = s.material;
+  material.friction = scene.material.friction;
+  const GranularParameters g = granularParameters(material, 0.5 * meanMass, meanMass);
   const bool triclinic = cell || (options.deform && (*options.deform)[2] != 0);
   // The cell's velocity gradient (diagonal) and the point it deforms about: LAMMPS's fix deform
   // keeps the box's centre (xlo + lx/2, ylo + ly/2) fixed, so the streaming velocity of a
@@ -299,7 +303,7 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
       {"wall", {{"gamman", g.gammaNWall}, {"gammat", g.gammaTWall}}},
       {"damping_exact_for", {{"pair_effective_mass", 0.5 * meanMass}, {"wall_particle_mass", meanMass}}},
       {"material", {{"density", s.material.density}, {"normal_stiffness", s.material.normalStiffness},
-                    {"tangential_stiffness", s.material.tangentialStiffness}, {"friction", s.material.friction},
+                    {"tangential_stiffness", s.material.tangentialStiffness}, {"friction", material.friction},
                     {"restitution", s.material.restitution}, {"local_damping", s.material.localDamping}}}};
   if (options.deform) meta["deform_erate"] = *options.deform;
   if (cell) {
