@@ -1,5 +1,6 @@
 #include "grainlab/starting_specimen.hpp"
 
+#include "grainlab/periodic_cell.hpp"
 #include "prepared_specimen.hpp"
 #include "run_context.hpp"
 
@@ -25,6 +26,10 @@ StartingSpecimen startingSpecimen(const Scene& scene) {
   s.motions = copy(world.motions());
   s.boundary = copy(world.boundaryFlags());
   s.walls = copy(world.walls());
+  if (const PeriodicCell* cell = world.periodicCell()) {
+    s.cell = cell->edges();
+    s.cellVelocityGradient = cell->velocityGradient();
+  }
   s.material = world.material();
   s.timestep = world.timestep();
   s.time = world.time();

@@ -25,7 +25,22 @@ edit() {  # PYTHON_STATEMENT_ON_s > FILE
   python3 -c "import json, sys; s = json.load(open('$work/packing.json')); $1; json.dump(s, sys.stdout)"
 }
 refused "membrane ring" --preset circular-quick
-refused "periodic cell" --preset periodic-biaxial-circular-quick
+# A scene's own cell is exported with its strain-controlled stages; what a servo holds is not.
+refused 'stages\[0\] ("compaction").friction' --preset periodic-biaxial-circular-quick --without-local-damping
+python3 -c "
+import json
+s = json.load(open('$work/packing.json'))
+del s['walls']
+s['boundary'] = {'type': 'periodic', 'size': [0.008, 0.006928]}
+json.dump(s, open('$work/cell.json', 'w'))
+for name, stage in [('isotropic', {'type': 'isotropic', 'pressure': 1e5, 'strain_rate': 1}),
+                    ('constant-stress', {'type': 'biaxial', 'pressure': 1e5, 'strain_rate': 1})]:
+    s['stages'] = [stage]
+    json.dump(s, open(f'$work/cell-{name}.json', 'w'))"
+refused 'stages\[0\] ("isotropic").type "isotropic": held by a stress servo' "$work/cell-isotropic.json"
+refused 'lateral "constant_stress": held by a stress servo' "$work/cell-constant-stress.json"
+refused '--periodic with a periodic cell' "$work/cell.json" --periodic
+refused '--deform with a periodic cell' "$work/cell.json" --deform 0,-1
 refused "polygon particles" <(edit 's["particles"][0] = {"shape": "polygon", "vertices": [[-1e-3, -1e-3], [1e-3, -1e-3], [0, 1e-3]], "position": s["particles"][0]["position"]}')
 refused "local_damping" --preset demo-pile
 refused "rolling_friction" <(edit 's["material"]["rolling_friction"] = 0.1')

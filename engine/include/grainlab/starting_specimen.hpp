@@ -4,7 +4,10 @@
 // another run kept (grainlab/prepared_specimen.hpp). For tools that hand the specimen to
 // another program (grainlab export lammps); it runs nothing.
 #include <cstddef>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "grainlab/material.hpp"
 #include "grainlab/math.hpp"
@@ -26,6 +29,8 @@ struct StartingSpecimen {
   std::vector<Motion> motions;
   std::vector<unsigned char> boundary;  ///< 1: part of the loading boundary (the ring)
   std::vector<Wall> walls;
+  /// A periodic cell's edge vectors (the columns, m) and the velocity gradient it follows (1/s).
+  std::optional<Eigen::Matrix2d> cell, cellVelocityGradient;
   Material material;
   double timestep = 0;                ///< s: the one the run would step with
   double time = 0;                    ///< s: the clock at the start (non-zero after start_from)

@@ -9,7 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grainlab/lammps/cell_deformation.hpp"
 #include "grainlab/lammps/granular_parameters.hpp"
+#include "grainlab/periodic_cell.hpp"
 #include "grainlab/output_writer.hpp"
 
 namespace grainlab::lammps {
@@ -51,10 +53,12 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
   if (scene.boundary.type == BoundarySpec::Type::Membrane || boundary > 0)
     throw ExportRefused("the membrane ring and its pressure servo (boundary.type \"membrane\", " +
                         std::to_string(boundary) + " ring particles) have no LAMMPS equivalent");
-  // The export's cell is the rectangle of four walls (--periodic); a scene's own cell, which
-  // may be tilted and is sized by its assembly, is not mapped to a LAMMPS box yet.
-  if (scene.boundary.type == BoundarySpec::Type::Periodic)
-    throw ExportRefused("a periodic cell (boundary.type \"periodic\"): give the discs four walls and --periodic");
+  // A scene's own cell is exported with its stages (cell_deformation.hpp); --periodic and
+  // --deform make a cell of four walls.
+  const bool cell = scene.boundary.type == BoundarySpec::Type::Periodic;
+  if (cell && (options.periodic || options.deform))
+    throw ExportRefused(std::string(options.deform ? "--deform" : "--periodic") +
+                        " with a periodic cell (boundary.type \"periodic\"): the cell and its stages are exported as they are");
   if (polygons > 0)
     throw ExportRefused(std::to_string(polygons) +
                         " polygon particles: pair_style gran/hooke/history has discs only");
@@ -69,7 +73,7 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
   if (s.material.localDamping > 0 && !options.withoutLocalDamping)
     throw ExportRefused("material.local_damping = " + shortNum(s.material.localDamping) +
                         ": LAMMPS has no Cundall local damping (--without-local-damping exports without it)");
-  if (!options.steps) {
+  if (!options.steps && !cell) {
     for (std::size_t k = s.firstStage; k < scene.stages.size(); ++k) {
       const StageSpec& stage = scene.stages[k];
       if (stage.type != StageSpec::Type::Free)
@@ -84,6 +88,7 @@ void refuseUnfaithful(const Scene& scene, const StartingSpecimen& s, const Expor
 }
 
 Box boxOf(const StartingSpecimen& s, bool periodic) {
+  if (s.cell) return {0, (*s.cell)(0, 0), 0, (*s.cell)(1, 1), "p p", "", ""};
   Side left, right, floor, top;
   for (std::size_t k = 0; k < s.walls.size(); ++k) {
     const Wall& w = s.walls[k];
@@ -144,9 +149,18 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
 
   const double dt = s.timestep;
   long steps = 0;
-  if (options.steps) {
+  const bool cell = s.cell.has_value();
+  std::vector<CellRun> cellStages;
+  if (cell) {
+    cellStages = cellRuns(scene, s);
+    for (const CellRun& r : cellStages) steps += r.steps;
+  }
+  // A cell's run is cut at --steps; walls run --steps in place of the scene's stages.
+  if (options.steps && cell) {
+    steps = std::min(steps, *options.steps);
+  } else if (options.steps) {
     steps = *options.steps;
-  } else {
+  } else if (!cell) {
     for (std::size_t k = s.firstStage; k < scene.stages.size(); ++k)
       steps += std::lround(scene.stages[k].duration / dt);
   }
@@ -161,8 +175,21 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
   }
   const double meanMass = totalMass / n, meanRadius = sumRadius / n;
   // The mean pair (m* = m̄/2) and the mean disc on a wall (m* = m̄): exact for equal discs.
-  const GranularParameters g = granularParameters(s.material, 0.5 * meanMass, meanMass);
-  const bool triclinic = options.deform && (*options.deform)[2] != 0;
+  // The friction the exported stages run with: the scene's. A specimen prepared by a stage with
+  // its own friction (a frictionless consolidation) still carries that stage's value.
+  Material material = s.material;
+  material.friction = scene.material.friction;
+  const GranularParameters g = granularParameters(material, 0.5 * meanMass, meanMass);
+  const bool triclinic = cell || (options.deform && (*options.deform)[2] != 0);
+  // The cell's velocity gradient (diagonal) and the point it deforms about: LAMMPS's fix deform
+  // keeps the box's centre (xlo + lx/2, ylo + ly/2) fixed, so the streaming velocity of a
+  // point x is L (x − c), and remap v carries it across the edges.
+  const double rate11 = cellStages.empty() ? 0 : cellStages.front().rate11;
+  const double rate22 = cellStages.empty() ? 0 : cellStages.front().rate22;
+  const Vec2 centre = cell ? Vec2(0.5 * (*s.cell)(0, 0), 0.5 * (*s.cell)(1, 1)) : Vec2(0, 0);
+  std::optional<PeriodicCell> periodicCell;
+  if (cell) periodicCell.emplace(*s.cell);
+  auto position = [&](int k) { return periodicCell ? periodicCell->wrap(s.positions[k]) : s.positions[k]; };
 
   // ---- specimen.data ----
   std::ostringstream data;
@@ -171,20 +198,23 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
        << num(box.xlo) << " " << num(box.xhi) << " xlo xhi\n"
        << num(box.ylo) << " " << num(box.yhi) << " ylo yhi\n"
        << "-0.5 0.5 zlo zhi\n";
-  if (triclinic) data << "0 0 0 xy xz yz\n";
+  if (triclinic) data << num(cell ? (*s.cell)(0, 1) : 0.0) << " 0 0 xy xz yz\n";
   data << "\nAtoms # sphere\n\n";
   for (int k = 0; k < n; ++k) {
     // This LAMMPS (Debian's, 7 Jan 2022) makes the mass 4/3 π r³ ρ even in 2D: the density
     // column is chosen so that it equals grainlab's disc mass ρ π r² per metre.
     const double r = s.radii[k];
     const double density = s.masses[k] / (4.0 / 3.0 * kPi * r * r * r);
-    data << k + 1 << " 1 " << num(2 * r) << " " << num(density) << " " << num(s.positions[k].x()) << " "
-         << num(s.positions[k].y()) << " 0\n";
+    const Vec2 x = position(k);
+    data << k + 1 << " 1 " << num(2 * r) << " " << num(density) << " " << num(x.x()) << " " << num(x.y()) << " 0\n";
   }
   data << "\nVelocities\n\n";
-  for (int k = 0; k < n; ++k)
-    data << k + 1 << " " << num(s.velocities[k].x()) << " " << num(s.velocities[k].y()) << " 0 0 0 "
-         << num(s.spins[k]) << "\n";
+  for (int k = 0; k < n; ++k) {
+    // grainlab keeps the fluctuation; LAMMPS (remap v) the whole velocity, streaming included.
+    const Vec2 x = position(k) - centre;
+    const Vec2 v = s.velocities[k] + Vec2(rate11 * x.x(), rate22 * x.y());
+    data << k + 1 << " " << num(v.x()) << " " << num(v.y()) << " 0 0 0 " << num(s.spins[k]) << "\n";
+  }
 
   // ---- in.grainlab ----
   std::ostringstream in;
@@ -221,6 +251,17 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
        << num(scene.gravity.y() / gMag) << " 0\n";
   in << "fix             integrate all nve/sphere disc\n"
      << "fix             plane all enforce2d\n";
+  if (cell && (rate11 != 0 || rate22 != 0)) {
+    // grainlab's cell follows ḣ = L h (exponential stretches): LAMMPS's trate, the tilt at
+    // L11 as ḣ12 = L11 h12. remap v, as grainlab: the contact sees the whole relative velocity,
+    // the images' affine velocity included (docs/periodic-cell.md, "Against LAMMPS").
+    in << "# The scene's constant-volume biaxial stage: L = diag(" << num(rate11) << ", " << num(rate22)
+       << ") 1/s, true strain rates.\n"
+       << "fix             deform all deform 1 x trate " << num(rate11) << " y trate " << num(rate22);
+    // LAMMPS refuses trate on a zero tilt (which stays zero: ḣ12 = L11 h12).
+    if ((*s.cell)(0, 1) != 0) in << " xy trate " << num(rate11);
+    in << " remap v\n";
+  }
   if (options.deform) {
     const auto& d = *options.deform;
     in << "# Strain-controlled deformation of the periodic cell (rates in 1/s, extension positive).\n"
@@ -255,23 +296,27 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
       {"timestep_s", dt},
       {"steps", steps},
       {"dump_every", every},
-      {"boundary", options.periodic ? "periodic" : "walls"},
+      {"boundary", cell ? "cell" : options.periodic ? "periodic" : "walls"},
       {"start_time_s", s.time},
       {"pair_style", {{"kn", g.kn}, {"kt", g.kt}, {"gamman", g.gammaN}, {"gammat", g.gammaT}, {"xmu", g.friction},
                       {"dampflag", 1}}},
       {"wall", {{"gamman", g.gammaNWall}, {"gammat", g.gammaTWall}}},
       {"damping_exact_for", {{"pair_effective_mass", 0.5 * meanMass}, {"wall_particle_mass", meanMass}}},
       {"material", {{"density", s.material.density}, {"normal_stiffness", s.material.normalStiffness},
-                    {"tangential_stiffness", s.material.tangentialStiffness}, {"friction", s.material.friction},
+                    {"tangential_stiffness", s.material.tangentialStiffness}, {"friction", material.friction},
                     {"restitution", s.material.restitution}, {"local_damping", s.material.localDamping}}}};
   if (options.deform) meta["deform_erate"] = *options.deform;
+  if (cell) {
+    meta["cell_h"] = {{(*s.cell)(0, 0), (*s.cell)(0, 1)}, {(*s.cell)(1, 0), (*s.cell)(1, 1)}};
+    meta["deform_trate"] = {rate11, rate22};
+  }
 
   std::filesystem::create_directories(directory);
   const std::filesystem::path dir(directory);
   writeFileAtomically((dir / "specimen.data").string(), data.str());
   writeFileAtomically((dir / "in.grainlab").string(), in.str());
   writeFileAtomically((dir / "export.json").string(), meta.dump(2) + "\n");
-  return {n, steps, every, dt, options.periodic};
+  return {n, steps, every, dt, options.periodic || cell};
 }
 
 }  // namespace grainlab::lammps

@@ -44,9 +44,12 @@ struct ExportSummary {
   bool periodic = false;
 };
 
-/// Throws ExportRefused (nothing written) for polygons, a membrane ring or any boundary or
-/// fixed particle, a servo-driven stage, local damping, inclined walls, a periodic cell without
-/// a wall rectangle, fix deform without a periodic cell, or nothing to run. Throws
+/// A scene's own periodic cell is written as a triclinic box with its free and constant-volume
+/// biaxial stages as fix deform (cell_deformation.hpp); the friction is the scene's, whatever a
+/// preparation stage left in the specimen. Throws ExportRefused (nothing written) for polygons,
+/// a membrane ring or any boundary or fixed particle, a servo-driven stage, local damping,
+/// inclined walls, --periodic without a wall rectangle or with a cell, fix deform without a
+/// periodic cell, or nothing to run. Throws
 /// std::runtime_error if a file cannot be written.
 ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& specimen, const ExportOptions& options,
                            const std::string& directory);
