@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <map>
-#include <sstream>
 #include <vector>
 
 #include "grainlab/checkpoint.hpp"
@@ -18,6 +16,7 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/series_columns.hpp"
 #include "../support/stopping_output.hpp"
 
 namespace grainlab {
@@ -25,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using grainlab::testing::fileBytes;
+using grainlab::testing::readSeriesColumns;
 using grainlab::testing::StoppingOutput;
 
 constexpr double kMeanStress = 300e3, kDeviatoric = 90e3;  // the preset's p and q, Pa
@@ -45,27 +45,6 @@ nlohmann::json shortScene() {
   return scene;
 }
 
-// series.csv as columns by name (the stage names in `stages`).
-std::map<std::string, std::vector<double>> readSeries(const fs::path& file, std::vector<std::string>& stages) {
-  std::istringstream in(fileBytes(file));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string c; std::getline(header, c, ',');) names.push_back(c);
-  std::map<std::string, std::vector<double>> columns;
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::string cell;
-    for (size_t k = 0; k < names.size(); ++k) {
-      if (!std::getline(row, cell, ',')) cell.clear();
-      if (names[k] == "stage") stages.push_back(cell);
-      columns[names[k]].push_back(cell.empty() || names[k] == "stage" ? std::nan("") : std::stod(cell));
-    }
-  }
-  return columns;
-}
-
 // |a − b| for directions of axes (period 180°), degrees.
 double axisDifference(double a, double b) { return std::abs(std::remainder(a - b, 180.0)); }
 
@@ -82,7 +61,7 @@ TEST_F(PeriodicRotationRun, HoldsPAndQWhileTheStressAxesTurn) {
   const RunSummary summary = runScene(scene, output);
   ASSERT_EQ(summary.status, RunStatus::Completed) << summary.error;
   std::vector<std::string> stage;
-  auto series = readSeries(root_ / "run" / "series.csv", stage);
+  auto series = readSeriesColumns(root_ / "run" / "series.csv", stage);
   std::vector<size_t> rows;
   for (size_t k = 0; k < stage.size(); ++k)
     if (stage[k] == "rotation") rows.push_back(k);

@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <map>
-#include <sstream>
 #include <vector>
 
 #include "grainlab/checkpoint.hpp"
@@ -18,6 +16,7 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/series_columns.hpp"
 #include "../support/stopping_output.hpp"
 
 namespace grainlab {
@@ -25,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using grainlab::testing::fileBytes;
+using grainlab::testing::readSeriesColumns;
 using grainlab::testing::StoppingOutput;
 
 constexpr double kPressure = 300e3;   // the preset's σ11, Pa
@@ -35,40 +35,6 @@ nlohmann::json shortScene() {
   nlohmann::json scene = presetScene("periodic-biaxial-circular-quick");
   scene["stages"].back()["target_axial_strain"] = kTargetStrain;  // shorter, same physics
   return scene;
-}
-
-// series.csv as columns by name; an empty cell is NaN; the stage names in `stages`.
-std::map<std::string, std::vector<double>> readSeries(const fs::path& file, std::vector<std::string>& stages) {
-  std::istringstream in(fileBytes(file));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string c; std::getline(header, c, ',');) names.push_back(c);
-  std::map<std::string, std::vector<double>> columns;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    size_t start = 0;
-    for (size_t k = 0; k <= line.size(); ++k) {
-      if (k == line.size() || line[k] == ',') {
-        cells.push_back(line.substr(start, k - start));
-        start = k + 1;
-      }
-    }
-    for (size_t k = 0; k < names.size(); ++k) {
-      const std::string cell = k < cells.size() ? cells[k] : "";
-      if (names[k] == "stage") stages.push_back(cell);
-      double v = std::nan("");
-      if (!cell.empty()) {
-        try {
-          v = std::stod(cell);
-        } catch (const std::exception&) {  // the stage's name
-        }
-      }
-      columns[names[k]].push_back(v);
-    }
-  }
-  return columns;
 }
 
 class PeriodicRun : public ::testing::Test {
@@ -84,7 +50,7 @@ TEST_F(PeriodicRun, SeriesMeasuresTheCellAndSigma11StaysAtItsTarget) {
   const RunSummary summary = runScene(scene, output);
   ASSERT_EQ(summary.status, RunStatus::Completed) << summary.error;
   std::vector<std::string> stage;
-  auto series = readSeries(root_ / "run" / "series.csv", stage);
+  auto series = readSeriesColumns(root_ / "run" / "series.csv", stage);
   ASSERT_GT(stage.size(), 5u);
   for (const char* column : {"axial_strain", "lateral_strain", "volumetric_strain", "sigma11", "sigma22", "sigma12",
                              "sigma21", "p", "q", "void_ratio", "area", "coordination", "contacts"}) {
