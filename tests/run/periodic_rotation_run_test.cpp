@@ -3,7 +3,6 @@
 // series.csv must show p and q held by the servos, the major stress direction turned by the
 // whole rotation, and a run stopped mid-turn resumed byte for byte.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/scratch_directory.hpp"
 #include "../support/series_columns.hpp"
 #include "../support/stopping_output.hpp"
 
@@ -48,12 +48,7 @@ nlohmann::json shortScene() {
 // |a − b| for directions of axes (period 180°), degrees.
 double axisDifference(double a, double b) { return std::abs(std::remainder(a - b, 180.0)); }
 
-class PeriodicRotationRun : public ::testing::Test {
- protected:
-  fs::path root_ = fs::temp_directory_path() / ("grainlab_periodic_rotation_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
-};
+using PeriodicRotationRun = grainlab::testing::ScratchDirectoryTest;
 
 TEST_F(PeriodicRotationRun, HoldsPAndQWhileTheStressAxesTurn) {
   const Scene scene = parseScene(shortScene());

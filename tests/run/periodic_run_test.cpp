@@ -3,7 +3,6 @@
 // cell), σ11 held at its target within the servo's 0.5 % through the shearing, the axial
 // strain the cell's own, and a run stopped twice and resumed writes the same bytes.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include "grainlab/run_output.hpp"
 
 #include "../support/file_bytes.hpp"
+#include "../support/scratch_directory.hpp"
 #include "../support/series_columns.hpp"
 #include "../support/stopping_output.hpp"
 
@@ -37,12 +37,7 @@ nlohmann::json shortScene() {
   return scene;
 }
 
-class PeriodicRun : public ::testing::Test {
- protected:
-  fs::path root_ = fs::temp_directory_path() / ("grainlab_periodic_run_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(root_); }
-  void TearDown() override { fs::remove_all(root_); }
-};
+using PeriodicRun = grainlab::testing::ScratchDirectoryTest;
 
 TEST_F(PeriodicRun, SeriesMeasuresTheCellAndSigma11StaysAtItsTarget) {
   const Scene scene = parseScene(shortScene());
