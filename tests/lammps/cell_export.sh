@@ -3,7 +3,9 @@
 # LAMMPS"): the data file's triclinic box is the cell, the atoms are the discs wrapped into it
 # with grainlab's masses, their velocities the fluctuation plus the streaming field of the
 # constant-volume biaxial stage about the box's centre, and fix deform the stage's true strain
-# rates for the steps grainlab's stage takes. Argument: grainlab.
+# rates for the steps grainlab's stage takes; and a specimen kept at the end of a servo's stage
+# (the cell still moving at the servo's rate) is exported, as grainlab run --from starts the next
+# stage from a cell at rest. Argument: grainlab.
 set -euo pipefail
 grainlab=$1
 work=$(mktemp -d)
@@ -63,3 +65,21 @@ check(meta["boundary"] == "cell" and meta["cell_h"] == [[0.02, 0], [0, 0.016]], 
 sys.exit(1 if failures else 0)
 PY
 
+# A specimen kept at the end of an isotropic stage: the cell moves at the servo's rate when it is
+# kept; the biaxial stage after it starts from the cell at rest in grainlab, and so in LAMMPS.
+python3 - "$work" <<'PY'
+import json, sys
+work = sys.argv[1]
+s = json.load(open(f"{work}/cell.json"))
+s["stages"] = [{"type": "isotropic", "name": "squeeze", "pressure": 1e5, "strain_rate": 0.5, "max_time": 2e-3}] + s["stages"]
+json.dump(s, open(f"{work}/two-stages.json", "w"))
+json.dump(dict(s, stages=s["stages"][:1]), open(f"{work}/squeeze.json", "w"))
+PY
+"$grainlab" run "$work/squeeze.json" --out "$work/squeezed" > /dev/null 2>&1
+if ! "$grainlab" export lammps "$work/two-stages.json" --from "$work/squeezed:squeeze" --out "$work/from-servo" > "$work/from-servo.log" 2>&1; then
+  echo "FAIL - a specimen kept at the end of a servo's stage is refused: $(cat "$work/from-servo.log")"
+  exit 1
+fi
+grep -q "x trate 2 y trate -2 remap v" "$work/from-servo/in.grainlab" ||
+  { echo "FAIL - from the squeezed specimen: no fix deform at the biaxial stage's rates"; exit 1; }
+echo "ok   - a specimen kept while the servo moved the cell is exported, at the next stage's rates"

@@ -24,9 +24,9 @@ std::vector<CellRun> cellRuns(const Scene& scene, const StartingSpecimen& s) {
   if (h(1, 0) != 0)
     throw ExportRefused("the periodic cell's first edge is not along x (h21 = " + shortNum(h(1, 0)) +
                         " m): LAMMPS's triclinic box is upper-triangular");
-  const Eigen::Matrix2d& L0 = *s.cellVelocityGradient;
-  if (L0(0, 1) != 0 || L0(1, 0) != 0)
-    throw ExportRefused("the periodic cell is being sheared (off-diagonal velocity gradient) when exported");
+  // The velocity gradient the specimen was kept with (its last stage's, a servo's) is not
+  // carried: grainlab starts each stage with the cell at rest and then sets the stage's own L
+  // (RunContext::beginStage), so the exported run starts from the stage's streaming field.
   std::vector<CellRun> runs;
   const double dt = s.timestep;
   for (std::size_t k = s.firstStage; k < scene.stages.size(); ++k) {
@@ -52,8 +52,6 @@ std::vector<CellRun> cellRuns(const Scene& scene, const StartingSpecimen& s) {
     if (!runs.empty() && (run.rate11 != runs.back().rate11 || run.rate22 != runs.back().rate22))
       throw ExportRefused(at + ": its strain rate differs from the stage before; LAMMPS's streaming velocities "
                                "are set once, so export one stage (with --from) at a time");
-    if (runs.empty() && (L0(0, 0) != run.rate11 || L0(1, 1) != run.rate22) && !L0.isZero())
-      throw ExportRefused(at + ": the cell is moving at another rate when exported");
     runs.push_back(run);
   }
   return runs;
