@@ -111,6 +111,7 @@ class ContactSolver {
   std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
   std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
   std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
+  bool deferredSlotsStale_ = true;       // the pair list changed since the slots were assigned
   // Scratch for the two-pass force loop: each pair's room for its contact (one of the two,
   // by whether the scene has polygons).
   std::vector<TouchingDiscs> touchingDiscs_;
