@@ -76,7 +76,8 @@ class ContactSolver {
   template <class Law, bool kDiscsOnly, bool kPeriodic = false>
   void pairForces(const Law& law, double dt);
   // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
-  // each particle sums its pair ends in pair order.
+  // the disc-wall pairs; each thread adds its own particles' shares at once, and the shares
+  // that waited (where slices meet) are added after, in pair order (disc_pair_batch.hpp).
   template <class Law>
   void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
