@@ -252,6 +252,10 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
 // once. In a scene whose particle indices follow space, almost nothing waits.
 template <class Law, bool kDiscsOnly, bool kPeriodic>
 void ContactSolver::pairForces(const Law& law, double dt) {
+  if (pool_ && deferredSlotsStale_) {
+    assignDeferredSlots();
+    deferredSlotsStale_ = false;
+  }
   std::vector<PairState>& pairs = neighbors_.pairs();
   if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());
   else touchingShapes_.resize(pairs.size());
@@ -315,21 +319,21 @@ template <class Law>
 void ContactSolver::widePairForces(const Law& law, double dt) {
   if (discBatchStale_) {
     discBatch_.build(neighbors_, particles_.size(), material_.rollingFriction > 0 ? &rollingPairs_ : nullptr,
-                     particles_.cell.has_value());
+                     particles_.cell.has_value(), pool_ ? pool_->threads() : 1);
     discBatchStale_ = false;
   }
   DiscPairBatch& b = discBatch_;
   std::vector<PairState>& pairs = neighbors_.pairs();
   Vec2* f = particles_.force.data();
   double* tau = particles_.torque.data();
-  // One thread adds each share at once; several write records, summed per particle after.
-  const bool serial = pool_ == nullptr;
+  // Each thread adds the shares of the particles it owns at once; the others' wait in records
+  // (disc_pair_batch.hpp), added after the loop.
   DiscPairKernelInput in{
       particles_.position.data()->data(), particles_.velocity.data()->data(), particles_.spin.data(),
       particles_.boundingRadius.data(), b.i(), b.j(), b.dampN(), b.dampT(), b.history(), b.fn(), b.ft(),
       b.overlap(), material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
-      std::is_same_v<decltype(law.tangential), CundallStrack>, serial ? f->data() : nullptr, serial ? tau : nullptr,
-      b.ends(), b.iEnd(), b.jEnd()};
+      std::is_same_v<decltype(law.tangential), CundallStrack>, f->data(), tau, b.ends(), b.iEnd(), b.jEnd(),
+      b.blockDefers()};
   if (b.rolls()) {  // rolling resistance: the couple's lanes (the walls' couples are the scalar law's, below)
     in.rollingHistory = b.rollingHistory();
     in.rollingStiffness = b.rollingStiffness();
@@ -339,43 +343,47 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   }
   if (particles_.cell) setWideCell(in);
   wideStateAhead_ = true;
-  const int blocks = b.paddedSlots() / kDiscPairBlock;
+  const int blocks = b.blocks();
   const int wallPairs = static_cast<int>(b.wallPairs().size());
-  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as the baseline).
+  // Work items: the blocks of disc-disc slots, then the disc-wall pairs (scalar, as the
+  // baseline) in groups, as DiscPairBatch planned the records for.
   auto work = [&](int begin, int end) {
     if (const int last = std::min(end, blocks); begin < last) discPairForces(in, begin * kDiscPairBlock, last * kDiscPairBlock);
     const Vec2* x = particles_.position.data();
     const double* radius = particles_.boundingRadius.data();
-    for (int w = std::max(begin, blocks) - blocks; w < end - blocks; ++w) {
+    const int first = (std::max(begin, blocks) - blocks) * DiscPairBatch::kWallPairsPerItem;
+    const int stop = std::min(wallPairs, (end - blocks) * DiscPairBatch::kWallPairsPerItem);
+    for (int w = first; w < stop; ++w) {
       PairState& p = pairs[static_cast<size_t>(b.wallPairs()[static_cast<size_t>(w)])];
+      const std::int32_t record = b.wallEnd(w);
       const DiscContact c = touchDiscWall(x[p.i], radius[p.i], particles_.walls[static_cast<size_t>(-1 - p.j)]);
       if (c.overlap <= 0) {
         clearContact(p);
-        if (!serial) b.setWallEnd(w, -0.0, -0.0, -0.0);
+        if (record >= 0) b.setRecord(record, -0.0, -0.0, -0.0);
         continue;
       }
       Vec2 F;
       double ti, tj;
       contactForce<false>(p, c, law, dt, F, ti, tj);
-      if (serial) {
+      if (record < 0) {
         f[p.i] -= F;
         tau[p.i] -= ti;
       } else {
-        b.setWallEnd(w, -F.x(), -F.y(), -ti);
+        b.setRecord(record, -F.x(), -F.y(), -ti);
       }
     }
   };
-  if (pool_) pool_->parallelFor(blocks + wallPairs, work);
-  else work(0, blocks + wallPairs);
-  // Each particle's records in order, then its local damping.
-  auto finish = [&](int begin, int end) {
-    for (int k = begin; k < end; ++k) {
-      if (!serial) b.addEnds(k, f[k], tau[k]);
-      if (material_.localDamping > 0) applyLocalDamping(particles_, k, material_.localDamping);
-    }
-  };
-  if (pool_) pool_->parallelFor(particles_.size(), finish);
-  else if (material_.localDamping > 0) finish(0, particles_.size());
+  if (pool_) pool_->parallelFor(b.workItems(), work);
+  else work(0, b.workItems());
+  // The shares that waited, in order, then each particle's local damping.
+  b.addDeferred(f, tau);
+  if (material_.localDamping > 0) {
+    auto damp = [&](int begin, int end) {
+      for (int k = begin; k < end; ++k) applyLocalDamping(particles_, k, material_.localDamping);
+    };
+    if (pool_) pool_->parallelFor(particles_.size(), damp);
+    else damp(0, particles_.size());
+  }
 }
 
 // Which pair ends the parallel force loop adds at once and which wait, for the current pair
@@ -479,7 +487,7 @@ void ContactSolver::computeForces(double dt, bool moved) {
     if (material_.rollingFriction > 0) assignRollingPairs();
     if (polygons) carryPolygonCache();
     ++profile_.rebuilds;
-    if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    deferredSlotsStale_ = true;  // the baseline's slots follow the pair list (assigned when it runs)
     discBatchStale_ = true;
   }
   auto t1 = Clock::now();
@@ -587,7 +595,7 @@ void ContactSolver::persist(StateArchive& a) {
                 "a polygon contact cache entry is out of range");
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
-    if (pool_) assignDeferredSlots();  // the slots follow the pair list
+    deferredSlotsStale_ = true;  // the slots follow the pair list
     if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
     discBatchStale_ = true;
   }

@@ -76,7 +76,8 @@ class ContactSolver {
   template <class Law, bool kDiscsOnly, bool kPeriodic = false>
   void pairForces(const Law& law, double dt);
   // The wide path for a discs-only scene: disc-disc pairs in batches (discPairForces), then
-  // each particle sums its pair ends in pair order.
+  // the disc-wall pairs; each thread adds its own particles' shares at once, and the shares
+  // that waited (where slices meet) are added after, in pair order (disc_pair_batch.hpp).
   template <class Law>
   void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
@@ -111,6 +112,7 @@ class ContactSolver {
   std::vector<int> deferredSlot_;        // per pair end (2 × pair + 1 for j): slot, or -1 if added at once
   std::vector<DeferredForce> deferred_;  // slots, grouped by particle, in pair order
   std::vector<int> deferredStart_;       // particle k's slots: [deferredStart_[k], deferredStart_[k+1])
+  bool deferredSlotsStale_ = true;       // the pair list changed since the slots were assigned
   // Scratch for the two-pass force loop: each pair's room for its contact (one of the two,
   // by whether the scene has polygons).
   std::vector<TouchingDiscs> touchingDiscs_;

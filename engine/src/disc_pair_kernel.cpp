@@ -45,7 +45,6 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
   const hn::RebindToSigned<decltype(d)> di;
   const size_t lanes = hn::Lanes(d);
   const auto zero = hn::Zero(d);
-  const auto negZero = hn::Set(d, -0.0);
   const auto half = hn::Set(d, 0.5);
   const auto kn = hn::Set(d, in.normalStiffness);
   const auto negKt = hn::Set(d, -in.tangentialStiffness);
@@ -58,11 +57,14 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
   double* const ends = in.ends;
   const std::int32_t* const iEnd = in.iEnd;
   const std::int32_t* const jEnd = in.jEnd;
+  const std::uint8_t* const blockDefers = in.blockDefers;
   // Where force and torque go: the pair's particles, or its members' bodies.
   const std::int64_t* const bodyI = kMembers ? in.bodyI : in.i;
   const std::int64_t* const bodyJ = kMembers ? in.bodyJ : in.j;
   const double apart[4] = {-0.0, -0.0, -0.0, 0.0};
   for (int s = begin; s < end; s += static_cast<int>(lanes)) {
+    // Whether some end in this block waits in a record (several threads, where slices meet).
+    const bool defers = blockDefers && blockDefers[s / kDiscPairBlock];
     const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
     const auto I2 = hn::Add(I, I), J2 = hn::Add(J, J);
     const auto xi = hn::GatherIndex(d, in.position, I2), yi = hn::GatherIndex(d, in.position + 1, I2);
@@ -84,10 +86,10 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       hn::StoreU(zero, d, in.ft + s);
       hn::StoreU(zero, d, in.overlap + s);
       if constexpr (kRollingHistory) hn::StoreU(zero, d, in.rollingHistory + s);
-      if (!force) {
+      if (defers) {
         for (size_t l = 0; l < lanes; ++l) {
-          std::memcpy(ends + 4 * iEnd[s + l], apart, sizeof apart);
-          std::memcpy(ends + 4 * jEnd[s + l], apart, sizeof apart);
+          if (iEnd[s + l] >= 0) std::memcpy(ends + 4 * iEnd[s + l], apart, sizeof apart);
+          if (jEnd[s + l] >= 0) std::memcpy(ends + 4 * jEnd[s + l], apart, sizeof apart);
         }
       }
       continue;
@@ -161,14 +163,14 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       ti = hn::Add(ti, hn::MulSub(lxi, fy, hn::Mul(lyi, fx)));
       tj = hn::Add(tj, hn::MulSub(lxj, fy, hn::Mul(lyj, fx)));
     }
-    // Each end's share: −F on i, F on j.
-    if (kMembers || force) {  // one thread: each touching pair's shares at once, in slot (= pair) order
-      hn::Store(fx, d, out);
-      hn::Store(fy, d, out + lanes);
-      hn::Store(ti, d, out + 2 * lanes);
-      hn::Store(tj, d, out + 3 * lanes);
-      std::uint8_t bits[8] = {};
-      hn::StoreMaskBits(d, touching, bits);
+    // Each end's share: −F on i, F on j, each touching pair's at once, in slot (= pair) order.
+    hn::Store(fx, d, out);
+    hn::Store(fy, d, out + lanes);
+    hn::Store(ti, d, out + 2 * lanes);
+    hn::Store(tj, d, out + 3 * lanes);
+    std::uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, touching, bits);
+    if (!defers) {
       for (size_t l = 0; l < lanes; ++l) {
         if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
         const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];
@@ -179,22 +181,30 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
         force[2 * pj + 1] += out[lanes + l];
         torque[pj] += out[3 * lanes + l];
       }
-    } else {  // several threads: each share to its particle's record
-      hn::Store(hn::IfThenElse(touching, fx, negZero), d, out);
-      hn::Store(hn::IfThenElse(touching, fy, negZero), d, out + lanes);
-      hn::Store(hn::IfThenElse(touching, tj, negZero), d, out + 2 * lanes);
-      hn::Store(hn::IfThenElse(touching, hn::Neg(fx), negZero), d, out + 3 * lanes);
-      hn::Store(hn::IfThenElse(touching, hn::Neg(fy), negZero), d, out + 4 * lanes);
-      hn::Store(hn::IfThenElse(touching, hn::Neg(ti), negZero), d, out + 5 * lanes);
+    } else {  // an end that waits takes its record, touching or not (x − y is x + (−y): stored negated on i)
       for (size_t l = 0; l < lanes; ++l) {
-        double* ei = ends + 4 * iEnd[s + l];
-        double* ej = ends + 4 * jEnd[s + l];
-        ej[0] = out[l];
-        ej[1] = out[lanes + l];
-        ej[2] = out[2 * lanes + l];
-        ei[0] = out[3 * lanes + l];
-        ei[1] = out[4 * lanes + l];
-        ei[2] = out[5 * lanes + l];
+        const bool touches = (bits[l / 8] >> (l % 8)) & 1;
+        const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];
+        if (const std::int32_t e = iEnd[s + l]; e >= 0) {
+          double* at = ends + 4 * e;
+          at[0] = touches ? -out[l] : -0.0;
+          at[1] = touches ? -out[lanes + l] : -0.0;
+          at[2] = touches ? -out[2 * lanes + l] : -0.0;
+        } else if (touches) {
+          force[2 * pi] -= out[l];
+          force[2 * pi + 1] -= out[lanes + l];
+          torque[pi] -= out[2 * lanes + l];
+        }
+        if (const std::int32_t e = jEnd[s + l]; e >= 0) {
+          double* at = ends + 4 * e;
+          at[0] = touches ? out[l] : -0.0;
+          at[1] = touches ? out[lanes + l] : -0.0;
+          at[2] = touches ? out[3 * lanes + l] : -0.0;
+        } else if (touches) {
+          force[2 * pj] += out[l];
+          force[2 * pj + 1] += out[lanes + l];
+          torque[pj] += out[3 * lanes + l];
+        }
       }
     }
     // The pair's state (a pair apart keeps nothing).

@@ -38,15 +38,18 @@ struct DiscPairKernelInput {
   // Law.
   double normalStiffness, tangentialStiffness, friction, dt;
   bool frictional;
-  // With one thread: the particles' force (x0 y0 x1 y1 …) and torque, to which each touching
-  // pair adds its shares at once, in pair order; null with several threads, which write the
-  // shares instead: as fx fy torque 0, i's at ends[4 iEnd[s]], j's at ends[4 jEnd[s]]; −0
-  // where the pair is apart (adding −0 changes nothing, not even a zero's sign).
+  // The particles' force (x0 y0 x1 y1 …) and torque, to which each touching pair adds its
+  // shares at once, in pair order, unless that end waits: where blockDefers[s / kDiscPairBlock]
+  // is 1 (blockDefers null: nowhere), slot s's i end with iEnd[s] >= 0 writes its share as
+  // fx fy torque at ends[4 iEnd[s]] instead, and so does its j end with jEnd[s] (−0 where the
+  // pair is apart: adding −0 changes nothing, not even a zero's sign). Several threads each
+  // add the ends of the particles they own and leave the others' waiting (disc_pair_batch.hpp).
   double* force;
   double* torque;
   double* ends;
   const std::int32_t* iEnd;
   const std::int32_t* jEnd;
+  const std::uint8_t* blockDefers = nullptr;
   // Rolling resistance (rolling_resistance.hpp), where the scene has it; null otherwise. Per
   // slot: the relative rotation θ_r (read and written; zero where the pair is apart) and the
   // pair's constants k_r, 1/k_r, μ_r R*, c_r. A frictionless step keeps θ_r as it is (the
