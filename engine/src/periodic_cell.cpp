@@ -40,6 +40,11 @@ Vec2 PeriodicCell::wrap(const Vec2& x) const {
 }
 
 ImageShift PeriodicCell::nearestImage(const Vec2& d) const {
+  // Every lattice vector h n (n ≠ 0) is at least the smaller width long, so a d shorter than
+  // half of it is strictly the nearest of its images: most branch vectors of the stress sums
+  // (the cell's servo measures them every few steps) are, and skip the search below.
+  const double w = minWidth();
+  if (4 * d.squaredNorm() < w * w) return {};
   // In a reduced basis the nearest lattice point to −d is within one step of the rounded
   // fractional coordinates; in a tilted one it can be many steps away. Reduce a copy (h M),
   // search there, and map the answer back (n = M m).

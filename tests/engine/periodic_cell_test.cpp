@@ -95,6 +95,28 @@ TEST(PeriodicCell, MinimumImageIsTheTrueNearestImageInAStronglyTiltedCell) {
   }
 }
 
+// nearestImage returns at once for a separation shorter than half the smaller width (every
+// lattice vector is at least that width long): just inside that bound, in tilted cells and in
+// every direction, the separation must be its own nearest image by the brute-force search.
+TEST(PeriodicCell, ASeparationUnderHalfTheSmallerWidthIsItsOwnNearestImage) {
+  for (const Mat2& h : {edges(1, 3.7, 0, 1), edges(1, -6.2, 0.05, 0.8), edges(0.5, 4.1, -0.2, 0.4), edges(1, 0.5, 0, 1)}) {
+    const PeriodicCell cell(h);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> angle(0, 2 * kPi), length(0.95, 0.999999), spread(0, 1);
+    for (int k = 0; k < 2000; ++k) {
+      const double t = angle(rng), r = 0.5 * cell.minWidth() * length(rng);
+      const Vec2 d(r * std::cos(t), r * std::sin(t));
+      EXPECT_EQ(cell.nearestImage(d), ImageShift{}) << "d = " << d.transpose();
+      EXPECT_GE(bruteForceNearest(cell, d).norm(), d.norm() - 1e-15) << "d = " << d.transpose();
+      // Past the bound the search decides: up to the larger width, where a shortcut taken
+      // too far would keep a d that has a nearer image.
+      const double far = 0.5 * cell.minWidth() + (std::max(cell.width(0), cell.width(1)) - 0.5 * cell.minWidth()) * spread(rng);
+      const Vec2 e(far * std::cos(t), far * std::sin(t));
+      EXPECT_NEAR(cell.minimumImage(e).norm(), bruteForceNearest(cell, e).norm(), 1e-12) << "e = " << e.transpose();
+    }
+  }
+}
+
 TEST(PeriodicCell, ReduceKeepsTheLatticeAndAreaAndMakesTheBasisNearlyOrthogonal) {
   PeriodicCell cell(edges(1, 3.7, 0, 1));  // simple shear γ = 3.7: LAMMPS would flip xy by 4
   ASSERT_TRUE(cell.needsReduction());
