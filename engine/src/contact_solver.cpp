@@ -260,38 +260,44 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
   const double* sinA = particles_.sinAngle.data();
   const int* shapeIndex = particles_.shapeIndex.data();
   PolygonFaceBatch& batch = polygonBatch_;
-  int slot = begin;  // this range's slots
-  for (int k = begin; k < end; ++k) {
-    const PairState& p = pairs[k];
-    CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
-    const int i = p.i, j = p.j;
-    Vec2 shift = Vec2::Zero();
-    if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
-    if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
-      batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr);
-      continue;
+  // In chunks, so that a chunk's shape records (fetched ahead by add()) and contacts are still
+  // in cache when the kernel and the forces read them.
+  constexpr int kChunk = 128;
+  for (int first = begin; first < end; first += kChunk) {
+    const int last = std::min(end, first + kChunk);
+    int slot = first;  // this chunk's slots
+    for (int k = first; k < last; ++k) {
+      const PairState& p = pairs[k];
+      CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
+      const int i = p.i, j = p.j;
+      Vec2 shift = Vec2::Zero();
+      if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
+      if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
+        batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr);
+        continue;
+      }
+      const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];
+      const double reach = radius[i] + radius[j];
+      if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
+        cache.kind = CachedContact::Kind::None;
+        batch.contact(k).overlap = -1;
+        continue;
+      }
+      const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
+      const int si = shapeIndex[i], sj = shapeIndex[j];
+      if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) batch.add(slot++, k, cache, si, pi, sj, pj, *polygonCollider_);
+      else batch.contact(k).overlap = -1;
     }
-    const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];
-    const double reach = radius[i] + radius[j];
-    if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
-      cache.kind = CachedContact::Kind::None;
-      batch.contact(k) = {};
-      continue;
+    batch.measure(*polygonCollider_, first, slot - first);
+    for (int k = first; k < last; ++k) {
+      const ContactGeometry& g = batch.contact(k);
+      if (g.overlap <= 0) {
+        clearContact(pairs[k]);
+        apart(k);
+        continue;
+      }
+      force(k, g);
     }
-    const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
-    const int si = shapeIndex[i], sj = shapeIndex[j];
-    if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) batch.add(slot++, k, cache, si, pi, sj, pj);
-    else batch.contact(k) = {};
-  }
-  batch.measure(*polygonCollider_, begin, slot - begin);
-  for (int k = begin; k < end; ++k) {
-    const ContactGeometry& g = batch.contact(k);
-    if (g.overlap <= 0) {
-      clearContact(pairs[k]);
-      apart(k);
-      continue;
-    }
-    force(k, g);
   }
 }
 

@@ -83,7 +83,7 @@ TEST(PolygonFaceBatch, MeasuresWithMeasurePolygonsBits) {
     held.slack = std::numeric_limits<double>::infinity();  // measured as kept, not searched again
     expected.push_back(collider.collidePolygons(a, ra, b, moved, &held));
     touching += expected.back().overlap > 0;
-    batch.add(slot, slot, kept, a, ra, b, moved);
+    batch.add(slot, slot, kept, a, ra, b, moved, collider);
     ++slot;
   }
   batch.measure(collider, 0, split);
