@@ -152,7 +152,7 @@ TEST(PolygonFaceBatch, APolygonPileGetsTheBaselinesForcesToRounding) {
     for (const Vec2& v : p.vertices) largestRadius = std::max(largestRadius, v.norm());
   }
   std::vector<ContactRecord> contacts;
-  wide->contacts(contacts);
+  baseline->contacts(contacts);
   const auto polygonPairs = std::count_if(contacts.begin(), contacts.end(), [](const ContactRecord& c) { return c.j >= 0; });
   ASSERT_GT(polygonPairs, 100) << "the pile's polygons press on each other";
   const double delta = kUnit * largestAngle + 18 * kUnit;
