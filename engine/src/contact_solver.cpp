@@ -221,6 +221,8 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
       ++n;
     }
     for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].contact);
+  } else if (widePolygons_) {
+    forEachTouchingBatched<kPeriodic>(begin, end, force, apart);
   } else {
     TouchingShapes* scratch = touchingShapes_.data() + begin;
     for (int k = begin; k < end; ++k) {
@@ -241,6 +243,61 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
       ++n;
     }
     for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].contact);
+  }
+}
+
+// The wide path's forEachTouching in a scene with polygons: the polygon pairs whose kept
+// features are a face against an edge are measured in a batch (polygon_face_batch.hpp), to
+// measurePolygons' bits; every other pair as pairGeometry measures it. The same calls in the
+// same order as forEachTouching, so the same bits.
+template <bool kPeriodic, class Force, class Apart>
+void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Apart&& apart) {
+  PairState* pairs = neighbors_.pairs().data();
+  const Vec2* x = particles_.position.data();
+  const double* radius = particles_.boundingRadius.data();
+  const ShapeKind* shape = particles_.shape.data();
+  const double* cosA = particles_.cosAngle.data();
+  const double* sinA = particles_.sinAngle.data();
+  const int* shapeIndex = particles_.shapeIndex.data();
+  PolygonFaceBatch& batch = polygonBatch_;
+  // In chunks, so that a chunk's shape records (fetched ahead by add()) and contacts are still
+  // in cache when the kernel and the forces read them.
+  constexpr int kChunk = 128;
+  for (int first = begin; first < end; first += kChunk) {
+    const int last = std::min(end, first + kChunk);
+    int slot = first;  // this chunk's slots
+    for (int k = first; k < last; ++k) {
+      const PairState& p = pairs[k];
+      CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
+      const int i = p.i, j = p.j;
+      Vec2 shift = Vec2::Zero();
+      if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
+      if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
+        batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr);
+        continue;
+      }
+      const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];
+      const double reach = radius[i] + radius[j];
+      if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
+        cache.kind = CachedContact::Kind::None;
+        batch.contact(k).overlap = -1;
+        continue;
+      }
+      const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
+      const int si = shapeIndex[i], sj = shapeIndex[j];
+      if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) batch.add(slot++, k, cache, si, pi, sj, pj, *polygonCollider_);
+      else batch.contact(k).overlap = -1;
+    }
+    batch.measure(*polygonCollider_, first, slot - first);
+    for (int k = first; k < last; ++k) {
+      const ContactGeometry& g = batch.contact(k);
+      if (g.overlap <= 0) {
+        clearContact(pairs[k]);
+        apart(k);
+        continue;
+      }
+      force(k, g);
+    }
   }
 }
 
@@ -482,6 +539,8 @@ void ContactSolver::computeForces(double dt, bool moved) {
                                 : neighbors_.update(particles_.position, particles_.boundingRadius, particles_.motion,
                                                     particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
+  widePolygons_ = polygons && simdPath() == SimdPath::Wide;
+  if (widePolygons_) polygonBatch_.resize(neighbors_.pairs().size());
   if (rebuilt) {
     assignDamping();
     if (material_.rollingFriction > 0) assignRollingPairs();

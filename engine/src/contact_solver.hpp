@@ -20,6 +20,7 @@
 #include "grainlab/profile.hpp"
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
+#include "polygon_face_batch.hpp"
 
 namespace grainlab {
 
@@ -82,6 +83,8 @@ class ContactSolver {
   void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
+  template <bool kPeriodic, class Force, class Apart>
+  void forEachTouchingBatched(int begin, int end, Force&& force, Apart&& apart);
   template <bool kPeriodic, class Law>
   void contactForce(PairState& pair, const ContactGeometry& g, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
@@ -122,6 +125,9 @@ class ContactSolver {
   DiscPairBatch discBatch_;
   bool discBatchStale_ = true;
   mutable bool wideStateAhead_ = false;
+  // The wide path in a scene with polygons: face-against-edge pairs measured in batches.
+  PolygonFaceBatch polygonBatch_;
+  bool widePolygons_ = false;
 };
 
 }  // namespace grainlab

@@ -1,5 +1,7 @@
 #include "polygon_collider.hpp"
 
+#include "polygon_face_kernel.hpp"
+
 namespace grainlab {
 
 int PolygonCollider::add(const Polygon& poly) {
@@ -12,6 +14,13 @@ int PolygonCollider::add(const Polygon& poly) {
       span = {t.dot(poly.vertices[e]), t.dot(poly.vertices[(e + 1) % poly.count]), n.dot(poly.vertices[e])};
     }
     spans_.push_back(span);
+    const Vec2 n = e < poly.count ? poly.normals[e] : Vec2::Zero();
+    const Vec2 u0 = e < poly.count ? poly.vertices[e] : Vec2::Zero();
+    const Vec2 u1 = e < poly.count ? poly.vertices[(e + 1) % poly.count] : Vec2::Zero();
+    const double face[kFaceRecord] = {n.x(), n.y(), span.lo, span.hi, span.front};
+    const double edge[kEdgeRecord] = {u0.x(), u0.y(), u1.x(), u1.y()};
+    faceTable_.insert(faceTable_.end(), face, face + kFaceRecord);
+    edgeTable_.insert(edgeTable_.end(), edge, edge + kEdgeRecord);
   }
   return static_cast<int>(polygons_.size()) - 1;
 }

@@ -59,6 +59,19 @@ class PolygonCollider {
     return measureDisc(k, a, pa, xb, rb);
   }
 
+  /// The wide path (polygon_face_batch.hpp): keeps the pair's features or searches again, as
+  /// collidePolygons does, without measuring them; true if they are a face against an edge,
+  /// which the face kernel measures (to measurePolygons' bits). Otherwise they do not touch.
+  bool keepPolygonFeatures(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const {
+    if (!stillHolds(k, pa, pb)) refreshPolygons(a, pa, b, pb, k);
+    return k.kind == CachedContact::Kind::FaceA || k.kind == CachedContact::Kind::FaceB;
+  }
+  /// The face kernel's shape tables (polygon_face_kernel.hpp), a record per corner
+  /// (polygon × kMaxPolygonVertices + corner): each face's n_x n_y lo hi front, each edge's
+  /// two ends.
+  const double* faceTable() const { return faceTable_.data(); }
+  const double* edgeTable() const { return edgeTable_.data(); }
+
   /// Full feature searches so far (the rest of the pair-steps reused their features), for
   /// the profile.
   long long featureSearches() const { return searches_.load(std::memory_order_relaxed); }
@@ -95,6 +108,7 @@ class PolygonCollider {
   FeatureTolerances tolerances_;
   std::vector<Polygon> polygons_;
   std::vector<FaceSpan> spans_;  // kMaxPolygonVertices per polygon
+  std::vector<double> faceTable_, edgeTable_;
   mutable std::atomic<long long> searches_{0};  // a statistic: counted, never read by the physics
 };
 

@@ -1,0 +1,79 @@
+#pragma once
+// A polygon scene's face-against-edge contacts laid out for the wide path: each step, the pairs
+// whose kept features are a face against an edge (PolygonCollider::keepPolygonFeatures) are
+// gathered into structure-of-arrays slots and measured several per instruction
+// (polygon_face_kernel.hpp), to the bits of PolygonCollider::measurePolygons. Every pair has a
+// contact here, by its index in the list: the batch's measurement, or whatever the caller
+// wrote (the scalar narrow phase's answer for the other pairs). A range of pairs
+// [begin, end) uses the slots from begin on, so threads on disjoint ranges share nothing.
+#include <cstdint>
+#include <vector>
+
+#include "contact_geometry.hpp"
+#include "polygon_collider.hpp"
+#include "polygon_face_kernel.hpp"
+
+namespace grainlab {
+
+class PolygonFaceBatch {
+ public:
+  /// Room for `pairs` pairs.
+  void resize(size_t pairs) {
+    contacts_.resize(pairs);
+    for (std::vector<double>* v : {&refX_, &refY_, &refC_, &refS_, &incX_, &incY_, &incC_, &incS_, &normalSign_}) {
+      v->resize(pairs);
+    }
+    face_.resize(pairs);
+    edge_.resize(pairs);
+    pair_.resize(pairs);
+  }
+  /// Pair k's contact: measured (after measure()) or as the caller wrote it.
+  ContactGeometry& contact(int k) { return contacts_[static_cast<size_t>(k)]; }
+
+  /// Puts pair k, polygon a at pa against polygon b at pb with face features `c` (FaceA or
+  /// FaceB), in `slot`, and fetches its shape records from `collider`'s tables ahead of measure().
+  void add(int slot, int k, const CachedContact& c, int a, const Pose& pa, int b, const Pose& pb,
+           const PolygonCollider& collider) {
+    const bool faceA = c.kind == CachedContact::Kind::FaceA;
+    const Pose& r = faceA ? pa : pb;
+    const Pose& i = faceA ? pb : pa;
+    const auto s = static_cast<size_t>(slot);
+    refX_[s] = r.x.x();
+    refY_[s] = r.x.y();
+    refC_[s] = r.c;
+    refS_[s] = r.s;
+    incX_[s] = i.x.x();
+    incY_[s] = i.x.y();
+    incC_[s] = i.c;
+    incS_[s] = i.s;
+    normalSign_[s] = faceA ? 1.0 : -1.0;
+    face_[s] = kFaceRecord * (static_cast<std::int64_t>(faceA ? a : b) * kMaxPolygonVertices + c.reference);
+    edge_[s] = kEdgeRecord * (static_cast<std::int64_t>(faceA ? b : a) * kMaxPolygonVertices + c.incident);
+    pair_[s] = k;
+    // The records are scattered (a polygon's own shape per particle): their cache misses
+    // overlap here, where nothing waits on them, instead of stalling the kernel's gathers.
+    __builtin_prefetch(collider.faceTable() + face_[s]);
+    __builtin_prefetch(collider.faceTable() + face_[s] + kFaceRecord - 1);
+    __builtin_prefetch(collider.edgeTable() + edge_[s]);
+    __builtin_prefetch(collider.edgeTable() + edge_[s] + kEdgeRecord - 1);
+  }
+
+  /// Measures slots [begin, begin + count) into their pairs' contacts.
+  void measure(const PolygonCollider& collider, int begin, int count) {
+    if (count == 0) return;
+    const auto s = static_cast<size_t>(begin);
+    const PolygonFaceKernelInput in{refX_.data() + s, refY_.data() + s, refC_.data() + s, refS_.data() + s,
+                                    incX_.data() + s, incY_.data() + s, incC_.data() + s, incS_.data() + s,
+                                    face_.data() + s, edge_.data() + s, normalSign_.data() + s, pair_.data() + s,
+                                    collider.faceTable(), collider.edgeTable(), contacts_.data()};
+    measurePolygonFaces(in, count);
+  }
+
+ private:
+  std::vector<ContactGeometry> contacts_;  // per pair
+  std::vector<double> refX_, refY_, refC_, refS_, incX_, incY_, incC_, incS_, normalSign_;  // per slot
+  std::vector<std::int64_t> face_, edge_;
+  std::vector<std::int32_t> pair_;
+};
+
+}  // namespace grainlab

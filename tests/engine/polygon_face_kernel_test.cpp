@@ -1,0 +1,189 @@
+// The wide path's polygon contacts (polygon_face_batch.hpp, polygon_face_kernel.hpp): the
+// face-against-edge pairs measured several per instruction must give measurePolygons' bits
+// lane by lane, and a polygon pile on the wide path the baseline's forces to rounding, the same
+// bits on any number of threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "grainlab/bench_scenes.hpp"
+#include "grainlab/simd_path.hpp"
+#include "grainlab/world.hpp"
+#include "polygon_collider.hpp"
+#include "polygon_face_batch.hpp"
+
+namespace grainlab {
+namespace {
+
+constexpr double kUnit = 0x1p-53;  // a double's unit roundoff
+
+bool hasWide() {
+  overrideSimdPath(SimdPath::Wide);
+  const bool built = simdPath() == SimdPath::Wide;
+  overrideSimdPath(std::nullopt);
+  return built;
+}
+
+Polygon ellipseHexagon(double longAxis) {  // as in the specimens
+  std::vector<Vec2> v;
+  const double a = 0.5 * longAxis, b = a / 1.5;
+  for (int k = 0; k < 6; ++k) v.emplace_back(a * std::cos(k * kPi / 3), b * std::sin(k * kPi / 3));
+  return makePolygon(v);
+}
+Polygon regular(int corners, double radius) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < corners; ++k) v.emplace_back(radius * std::cos(2 * kPi * k / corners), radius * std::sin(2 * kPi * k / corners));
+  return makePolygon(v);
+}
+bool sameBits(const ContactGeometry& a, const ContactGeometry& b) {
+  const double x[5] = {a.normal.x(), a.normal.y(), a.point.x(), a.point.y(), a.overlap};
+  const double y[5] = {b.normal.x(), b.normal.y(), b.point.x(), b.point.y(), b.overlap};
+  return std::memcmp(x, y, sizeof x) == 0;
+}
+
+// Random pairs of four shapes (hexagons, a triangle and an octagon: the incident edge wraps at
+// other corners), their features found at one pose and measured at another a little moved,
+// some still touching and some slid apart. The kernel does measurePolygons' operations in its
+// order, without fused products (the build contracts none) and with IEEE division, so the bound
+// is zero: every lane must equal the scalar answer bit for bit. Two ranges of odd lengths (one
+// starting past slot 0) cover the part-vectors at their ends.
+TEST(PolygonFaceBatch, MeasuresWithMeasurePolygonsBits) {
+  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  PolygonCollider collider(1.0 / 0.0025);
+  const int shapes[] = {collider.add(ellipseHexagon(0.005)), collider.add(ellipseHexagon(0.0045)),
+                        collider.add(regular(3, 0.0025)), collider.add(regular(8, 0.002))};
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int pairs = 2003, split = 997;
+  PolygonFaceBatch batch;
+  batch.resize(pairs);
+  std::vector<ContactGeometry> expected;
+  int slot = 0, touching = 0;
+  while (slot < pairs) {
+    const int a = shapes[rng() % 4], b = shapes[rng() % 4];
+    const double reach = collider.polygon(a).circumradius + collider.polygon(b).circumradius;
+    const double dir = 2 * kPi * unit(rng);
+    const Pose pa{Vec2(0.01 * unit(rng), 0.01 * unit(rng)), 0, 0};
+    const double angleA = 2 * kPi * unit(rng), angleB = 2 * kPi * unit(rng);
+    const Pose ra{pa.x, std::cos(angleA), std::sin(angleA)};
+    const Pose rb{ra.x + (0.4 + 0.6 * unit(rng)) * reach * Vec2(std::cos(dir), std::sin(dir)), std::cos(angleB), std::sin(angleB)};
+    CachedContact kept;
+    if (!collider.keepPolygonFeatures(a, ra, b, rb, kept)) continue;
+    // Moved by up to 15 % of the size and 0.3 rad: the kept features, measured where they are now.
+    const double turn = 0.3 * (2 * unit(rng) - 1);
+    const Pose moved{rb.x + 0.15 * reach * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1), std::cos(angleB + turn),
+                     std::sin(angleB + turn)};
+    CachedContact held = kept;
+    held.slack = std::numeric_limits<double>::infinity();  // measured as kept, not searched again
+    expected.push_back(collider.collidePolygons(a, ra, b, moved, &held));
+    touching += expected.back().overlap > 0;
+    batch.add(slot, slot, kept, a, ra, b, moved, collider);
+    ++slot;
+  }
+  batch.measure(collider, 0, split);
+  batch.measure(collider, split, pairs - split);
+  int differing = 0;
+  double worst = 0;
+  for (int k = 0; k < pairs; ++k) {
+    const ContactGeometry& got = batch.contact(k);
+    if (!sameBits(got, expected[static_cast<size_t>(k)])) ++differing;
+    worst = std::max(worst, std::abs(got.overlap - expected[static_cast<size_t>(k)].overlap));
+  }
+  EXPECT_EQ(differing, 0) << "largest overlap difference " << worst << " m";
+  // Both outcomes are exercised: touching lanes and lanes whose features no longer touch.
+  EXPECT_GT(touching, pairs / 4);
+  EXPECT_LT(touching, pairs - pairs / 10);
+}
+
+// A shuffled polygon pile pressed together under 50 g, in contact (as in the incremental
+// rotation test).
+Scene pressedPolygonPile() {
+  Scene scene = pileScene(12, 12, true);
+  std::mt19937_64 rng(7);
+  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+  for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
+  scene.gravity *= 50;
+  return scene;
+}
+std::unique_ptr<World> makeWorld(const Scene& scene, int threads) {
+  WorldSettings settings;
+  settings.threads = threads;
+  auto w = std::make_unique<World>(scene.material, settings);
+  for (const ParticleSpec& p : scene.particles) w->addParticle(p);
+  for (const Wall& wall : scene.walls) w->addWall(wall);
+  w->setGravity(scene.gravity);
+  return w;
+}
+
+// From the same state, one step on each path. The contacts' measurement is the same to the bit
+// (above); what differs is the polygons' cos and sin, which the wide path advances by the
+// step's turn (incremental_rotation.hpp): within Δ = (u max|θ| + 18u) rad of sincos's. A contact
+// point moves by at most its lever a (the circumradius) times Δ, an overlap by 2aΔ, a normal
+// force by k_n 2aΔ; the force's direction turns by Δ and the damping's lever by aΔ, both far
+// less. At most 8 contacts a particle, 8 × 2 × k_n 2aΔ bounds a force's gap, a times that a
+// torque's. A broken term of the measurement moves an overlap by a fraction of a, not aΔ ≈ 1e-14 a.
+TEST(PolygonFaceBatch, APolygonPileGetsTheBaselinesForcesToRounding) {
+  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  const Scene scene = pressedPolygonPile();
+  const std::unique_ptr<World> baseline = makeWorld(scene, 1), wide = makeWorld(scene, 1);
+  overrideSimdPath(SimdPath::Baseline);
+  for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other
+    baseline->step();
+    wide->step();
+  }
+  baseline->step();
+  overrideSimdPath(SimdPath::Wide);
+  wide->step();
+  overrideSimdPath(std::nullopt);
+  double largestAngle = 0, largestRadius = 0, forceGap = 0, torqueGap = 0;
+  for (int p = 0; p < baseline->size(); ++p) {
+    ASSERT_EQ(baseline->angles()[p], wide->angles()[p]);
+    largestAngle = std::max(largestAngle, std::abs(baseline->angles()[p]));
+    forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
+    torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
+  }
+  for (const ParticleSpec& p : scene.particles) {
+    for (const Vec2& v : p.vertices) largestRadius = std::max(largestRadius, v.norm());
+  }
+  std::vector<ContactRecord> contacts;
+  baseline->contacts(contacts);
+  const auto polygonPairs = std::count_if(contacts.begin(), contacts.end(), [](const ContactRecord& c) { return c.j >= 0; });
+  ASSERT_GT(polygonPairs, 100) << "the pile's polygons press on each other";
+  const double delta = kUnit * largestAngle + 18 * kUnit;
+  const double forceBound = 8 * 2 * scene.material.normalStiffness * 2 * largestRadius * delta;
+  EXPECT_LE(forceGap, forceBound);
+  EXPECT_LE(torqueGap, forceBound * largestRadius);
+}
+
+// The batch is laid out per range of pairs, and each range measures its own slots: 1, 2 and 3
+// threads must give the same bits.
+TEST(PolygonFaceBatch, SameBitsOnOneTwoAndThreeThreads) {
+  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  const Scene scene = pressedPolygonPile();
+  overrideSimdPath(SimdPath::Wide);
+  std::vector<std::vector<double>> states;
+  for (const int threads : {1, 2, 3}) {
+    const std::unique_ptr<World> w = makeWorld(scene, threads);
+    for (int k = 0; k < 1000; ++k) w->step();
+    std::vector<double> state;
+    for (int p = 0; p < w->size(); ++p) {
+      state.insert(state.end(), {w->positions()[p].x(), w->positions()[p].y(), w->angles()[p], w->forces()[p].x(),
+                                 w->forces()[p].y(), w->torques()[p]});
+    }
+    states.push_back(state);
+  }
+  overrideSimdPath(std::nullopt);
+  for (size_t t = 1; t < states.size(); ++t) {
+    EXPECT_EQ(0, std::memcmp(states[0].data(), states[t].data(), states[0].size() * sizeof(double)))
+        << t + 1 << " threads";
+  }
+}
+
+}  // namespace
+}  // namespace grainlab
