@@ -121,45 +121,9 @@ std::unique_ptr<World> makeWorld(const Scene& scene, int threads) {
   return w;
 }
 
-// From the same state, one step on each path. The contacts' measurement is the same to the bit
-// (above); what differs is the polygons' cos and sin, which the wide path advances by the
-// step's turn (incremental_rotation.hpp): within Δ = (u max|θ| + 18u) rad of sincos's. A contact
-// point moves by at most its lever a (the circumradius) times Δ, an overlap by 2aΔ, a normal
-// force by k_n 2aΔ; the force's direction turns by Δ and the damping's lever by aΔ, both far
-// less. At most 8 contacts a particle, 8 × 2 × k_n 2aΔ bounds a force's gap, a times that a
-// torque's. A broken term of the measurement moves an overlap by a fraction of a, not aΔ ≈ 1e-14 a.
-TEST(PolygonFaceBatch, APolygonPileGetsTheBaselinesForcesToRounding) {
-  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
-  const Scene scene = pressedPolygonPile();
-  const std::unique_ptr<World> baseline = makeWorld(scene, 1), wide = makeWorld(scene, 1);
-  overrideSimdPath(SimdPath::Baseline);
-  for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other
-    baseline->step();
-    wide->step();
-  }
-  baseline->step();
-  overrideSimdPath(SimdPath::Wide);
-  wide->step();
-  overrideSimdPath(std::nullopt);
-  double largestAngle = 0, largestRadius = 0, forceGap = 0, torqueGap = 0;
-  for (int p = 0; p < baseline->size(); ++p) {
-    ASSERT_EQ(baseline->angles()[p], wide->angles()[p]);
-    largestAngle = std::max(largestAngle, std::abs(baseline->angles()[p]));
-    forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
-    torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
-  }
-  for (const ParticleSpec& p : scene.particles) {
-    for (const Vec2& v : p.vertices) largestRadius = std::max(largestRadius, v.norm());
-  }
-  std::vector<ContactRecord> contacts;
-  baseline->contacts(contacts);
-  const auto polygonPairs = std::count_if(contacts.begin(), contacts.end(), [](const ContactRecord& c) { return c.j >= 0; });
-  ASSERT_GT(polygonPairs, 100) << "the pile's polygons press on each other";
-  const double delta = kUnit * largestAngle + 18 * kUnit;
-  const double forceBound = 8 * 2 * scene.material.normalStiffness * 2 * largestRadius * delta;
-  EXPECT_LE(forceGap, forceBound);
-  EXPECT_LE(torqueGap, forceBound * largestRadius);
-}
+// One step from the same state on each path, with the pile's forces within rounding of the
+// baseline's: tests/engine/incremental_rotation_test.cpp (the wide step there measures the
+// pile's face-against-edge contacts in this batch).
 
 // The batch is laid out per range of pairs, and each range measures its own slots: 1, 2 and 3
 // threads must give the same bits.
