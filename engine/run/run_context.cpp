@@ -72,6 +72,11 @@ void RunContext::buildCell(const Scene& scene) {
   for (const ParticleSpec& p : particles) world_->addParticle(p);
 }
 
+double RunContext::voidRatioNow() const {
+  if (!sampled_) return std::numeric_limits<double>::quiet_NaN();
+  return (sampled_->area() - sampled_->solidArea()) / sampled_->solidArea();
+}
+
 double RunContext::totalWork() const {
   double work = 0;
   for (const StageSpec& s : scene_.stages) work += stageWork(s.type);

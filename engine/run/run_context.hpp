@@ -34,6 +34,8 @@ class RunContext {
   void sample(RunObserver& observer);
   double peakPhiMobDeg() const { return sampler_->peakPhiMobDeg(); }
   double voidRatioAfterConsolidation() const { return voidRatioAfterConsolidation_; }
+  /// The specimen's void ratio now, as the sampler measures it (NaN without a ring or cell).
+  double voidRatioNow() const;
   double sampleSeconds() const { return sampleSeconds_; }
   /// The validity envelope's first crossings measured so far (ValidityMonitor).
   /// The validity envelope's warnings: those it started with (addWarnings), then the first

@@ -6,35 +6,18 @@
 #include <memory>
 
 #include "grainlab/errors.hpp"
-#include "grainlab/membrane.hpp"
-#include "grainlab/periodic_cell.hpp"
-#include "grainlab/specimen.hpp"
+#include "grainlab/prepared_shearing.hpp"
 #include "grainlab/stages.hpp"
 #include "grainlab/thread_cpu_clock.hpp"
 
 namespace grainlab::bench {
 namespace {
 
-// A scene's specimen built and prepared as a run of it builds and prepares it (run_context.cpp:
-// the world, the ring, each stage's friction, the cell at rest when a stage begins), without
-// the sampling; then its shearing stage, begun.
+// One side: its specimen prepared as a run prepares it, and the radii of its own particles.
 struct ShearingSpecimen {
-  std::unique_ptr<World> world;
-  std::unique_ptr<Membrane> membrane;  // the ring's; none in a cell
-  std::unique_ptr<Stage> shearing;     // refers to the two above: declared after them
+  std::unique_ptr<PreparedShearing> prepared;
   std::vector<double> specimenRadii;  // sorted: the ring's and the cell's must be the same
-  int specimenParticles = 0;
-  double voidRatio = 0;
 };
-
-std::unique_ptr<Stage> beginStage(const Scene& scene, const StageSpec& spec, World& world, Membrane* membrane) {
-  world.setFriction(spec.friction.value_or(scene.material.friction));
-  if (world.periodicCell()) {
-    world.setCellVelocityGradient(Eigen::Matrix2d::Zero());
-    return makeCellStage(spec, scene.output, world, scene.boundary.rateCap);
-  }
-  return makeStage(spec, scene.output, world, membrane);
-}
 
 void checkFits(const Scene& scene, BoundarySpec::Type boundary, const std::string& side) {
   if (!scene.assembly || scene.assembly->shape != SpecimenRecipe::Shape::Disc)
@@ -45,56 +28,22 @@ void checkFits(const Scene& scene, BoundarySpec::Type boundary, const std::strin
     throw SceneError(side + ".stages", "must end in a shearing stage");
 }
 
-ShearingSpecimen prepare(const Scene& scene, int threads, std::ostream* progress) {
+ShearingSpecimen prepare(Scene scene, int threads, std::ostream* progress) {
+  scene.solver.threads = threads;
   ShearingSpecimen s;
-  WorldSettings settings;
-  settings.threads = threads;
-  s.world = std::make_unique<World>(scene.material, settings);
-  World& world = *s.world;
-  const bool periodic = scene.boundary.type == BoundarySpec::Type::Periodic;
-  double solid = 0;
-  if (periodic) {
-    const CellSpecimen specimen = generateCellSpecimen(*scene.assembly, scene.seed);
-    world.setPeriodicCell(specimen.edges);
-    for (const ParticleSpec& p : specimen.particles) {
-      world.addParticle(p);
-      s.specimenRadii.push_back(p.radius);
-    }
-    solid = specimen.solidArea;
-  } else {
-    for (const ParticleSpec& p : generateSpecimen(*scene.assembly, scene.seed).particles) {
-      world.addParticle(p);
-      if (!p.boundary) s.specimenRadii.push_back(p.radius);
-    }
+  s.prepared = std::make_unique<PreparedShearing>(std::move(scene), progress);
+  const World& world = s.prepared->world();
+  for (int k = 0; k < world.size(); ++k) {
+    if (!world.boundaryFlags()[static_cast<size_t>(k)]) s.specimenRadii.push_back(world.boundingRadii()[static_cast<size_t>(k)]);
   }
   std::sort(s.specimenRadii.begin(), s.specimenRadii.end());
-  s.specimenParticles = static_cast<int>(s.specimenRadii.size());
-  world.setTimestepSafety(scene.solver.timestepSafety);
-  if (scene.solver.timestep > 0) world.setTimestep(scene.solver.timestep);
-  world.initialize();
-  if (!periodic) s.membrane = std::make_unique<Membrane>(world);
-  size_t k = 0;
-  for (; !isShearing(scene.stages[k].type); ++k) {
-    if (progress) *progress << "bench: " << scene.name << ": " << scene.stages[k].name << "\n";
-    const std::unique_ptr<Stage> stage = beginStage(scene, scene.stages[k], world, s.membrane.get());
-    for (std::int64_t n = 1; !stage->finished(); ++n) {
-      stage->beforeStep();
-      world.step();
-      stage->afterStep();
-      if (n % 1000 == 0) world.checkHealth();
-    }
-    if (s.membrane) s.membrane->setStrainRates(0, 0);
-  }
-  world.checkHealth();
-  s.voidRatio = periodic ? (world.periodicCell()->area() - solid) / solid : s.membrane->voidRatio();
-  s.shearing = beginStage(scene, scene.stages[k], world, s.membrane.get());
   return s;
 }
 
 // One timed repeat of `steps` steps of the shearing stage (its servo and boundary included).
 void timeRepeat(ShearingSpecimen& s, int steps, int threads, PileSpeed& into) {
-  World& world = *s.world;
-  Stage& stage = *s.shearing;
+  World& world = s.prepared->world();
+  Stage& stage = s.prepared->shearing();
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = threadCpuSeconds();
   for (int n = 0; n < steps; ++n) {
@@ -110,12 +59,13 @@ void timeRepeat(ShearingSpecimen& s, int steps, int threads, PileSpeed& into) {
 }
 
 ShearingSpeed describe(const Scene& scene, const ShearingSpecimen& s) {
+  const World& world = s.prepared->world();
   std::vector<ContactRecord> contacts;
-  s.world->contacts(contacts);
+  world.contacts(contacts);
   ShearingSpeed r;
-  r.speed = PileSpeed{scene.name, s.world->size(), 2.0 * contacts.size() / s.world->size(), {}, s.world->timestep()};
-  r.specimenParticles = s.specimenParticles;
-  r.voidRatio = s.voidRatio;
+  r.speed = PileSpeed{scene.name, world.size(), 2.0 * contacts.size() / world.size(), {}, world.timestep(), {}};
+  r.specimenParticles = static_cast<int>(s.specimenRadii.size());
+  r.voidRatio = s.prepared->voidRatio();
   return r;
 }
 
@@ -127,20 +77,20 @@ RingCellSpeeds measureCellAgainstRing(const Scene& ring, const Scene& cell, int 
   checkFits(cell, BoundarySpec::Type::Periodic, "cell");
   ShearingSpecimen r = prepare(ring, threads, progress), c = prepare(cell, threads, progress);
   if (r.specimenRadii != c.specimenRadii)
-    throw SceneError("cell.assembly", "the cell's particles (" + std::to_string(c.specimenParticles) +
-                                          ") are not the ring specimen's (" + std::to_string(r.specimenParticles) +
+    throw SceneError("cell.assembly", "the cell's particles (" + std::to_string(c.specimenRadii.size()) +
+                                          ") are not the ring specimen's (" + std::to_string(r.specimenRadii.size()) +
                                           "): give both the same recipe and seed");
   RingCellSpeeds out{describe(ring, r), describe(cell, c)};
-  const double ring0 = r.shearing->sampleCoordinate(), cell0 = c.shearing->sampleCoordinate();
+  const double ring0 = r.prepared->shearing().sampleCoordinate(), cell0 = c.prepared->shearing().sampleCoordinate();
   if (progress) *progress << "bench: timing " << ring.name << " and " << cell.name << " in turn, shearing\n";
   for (int rep = 0; rep < repeats; ++rep) {
     timeRepeat(r, steps, threads, out.ring.speed);
     timeRepeat(c, steps, threads, out.cell.speed);
   }
-  r.world->checkHealth();
-  c.world->checkHealth();
-  out.ring.axialStrainTimed = r.shearing->sampleCoordinate() - ring0;
-  out.cell.axialStrainTimed = c.shearing->sampleCoordinate() - cell0;
+  r.prepared->world().checkHealth();
+  c.prepared->world().checkHealth();
+  out.ring.axialStrainTimed = r.prepared->shearing().sampleCoordinate() - ring0;
+  out.cell.axialStrainTimed = c.prepared->shearing().sampleCoordinate() - cell0;
   return out;
 }
 
