@@ -244,8 +244,10 @@ await runBrowserTest([], async ({ server, browser }) => {
   await screenshot(page, '07-validation-error');
 
   // ---- polygons watched live, then cancelled and deleted ----
+  // The full preset (minutes), so the run is still going when Cancel is clicked on any machine:
+  // the quick one takes under 5 s here.
   const liveId = await page.evaluate(async () => {
-    const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ preset: 'elongated-random-quick' }) });
+    const response = await fetch('/api/runs', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ preset: 'elongated-random' }) });
     return (await response.json()).id;
   });
   // A run sheared faster than the lateral servo can follow: its header lists the warning.
