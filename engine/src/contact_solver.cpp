@@ -77,7 +77,7 @@ void ContactSolver::initialize() {
 }
 
 bool ContactSolver::movedOutOfSkin(int begin, int end) const {
-  return neighbors_.outdated(particles_.position, begin, end);
+  return neighbors_.outdated(particles_.position, begin, end, simdPath() == SimdPath::Wide);
 }
 
 void ContactSolver::clearTangentialHistory() {
