@@ -52,53 +52,42 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
   const auto mu = hn::Set(d, in.friction);
   const auto dt = hn::Set(d, in.dt);
   HWY_ALIGN double out[6 * hn::MaxLanes(d)];
-  // Every pointer in a local: through `in`, each store of a share made the compiler reload
-  // them (the stores might have changed `in`) at every block.
-  const double* const position = in.position;
-  const double* const velocity = in.velocity;
-  const double* const spinOf = in.spin;
-  const double* const radius = in.radius;
-  const std::int64_t* const slotI = in.i;
-  const std::int64_t* const slotJ = in.j;
-  const double* const dampNOf = in.dampN;
-  const double* const dampTOf = in.dampT;
-  double* const history = in.history;
-  double* const fnOf = in.fn;
-  double* const ftOf = in.ft;
-  double* const overlapOf = in.overlap;
-  double* const force = in.force;
+  double* const force = in.force;  // in locals: the stores below cannot then reload them
   double* const torque = in.torque;
   double* const ends = in.ends;
   const std::int32_t* const iEnd = in.iEnd;
   const std::int32_t* const jEnd = in.jEnd;
   const std::uint8_t* const blockDefers = in.blockDefers;
   // Where force and torque go: the pair's particles, or its members' bodies.
-  const std::int64_t* const bodyI = kMembers ? in.bodyI : slotI;
-  const std::int64_t* const bodyJ = kMembers ? in.bodyJ : slotJ;
+  const std::int64_t* const bodyI = kMembers ? in.bodyI : in.i;
+  const std::int64_t* const bodyJ = kMembers ? in.bodyJ : in.j;
   const double apart[4] = {-0.0, -0.0, -0.0, 0.0};
   for (int s = begin; s < end; s += static_cast<int>(lanes)) {
     // Whether some end in this block waits in a record (several threads, where slices meet).
     const bool defers = blockDefers && blockDefers[s / kDiscPairBlock];
-    const auto I = hn::LoadU(di, slotI + s), J = hn::LoadU(di, slotJ + s);
+    const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
     const auto I2 = hn::Add(I, I), J2 = hn::Add(J, J);
-    const auto xi = hn::GatherIndex(d, position, I2), yi = hn::GatherIndex(d, position + 1, I2);
-    auto xj = hn::GatherIndex(d, position, J2), yj = hn::GatherIndex(d, position + 1, J2);
+    const auto xi = hn::GatherIndex(d, in.position, I2), yi = hn::GatherIndex(d, in.position + 1, I2);
+    auto xj = hn::GatherIndex(d, in.position, J2), yj = hn::GatherIndex(d, in.position + 1, J2);
     if constexpr (kPeriodic) {  // j's image, x_j + h n
       const auto n1 = hn::LoadU(d, in.imageN1 + s), n2 = hn::LoadU(d, in.imageN2 + s);
       xj = hn::Add(xj, hn::MulAdd(hn::Set(d, in.cellEdges[0]), n1, hn::Mul(hn::Set(d, in.cellEdges[1]), n2)));
       yj = hn::Add(yj, hn::MulAdd(hn::Set(d, in.cellEdges[2]), n1, hn::Mul(hn::Set(d, in.cellEdges[3]), n2)));
     }
-    const auto ri = hn::GatherIndex(d, radius, I), rj = hn::GatherIndex(d, radius, J);
+    // A disc's radius sits beside its slot (DiscPairBatch::layRadii): two loads instead of two
+    // gathers. Clump members' radii are gathered.
+    const auto ri = kMembers ? hn::GatherIndex(d, in.radius, I) : hn::LoadU(d, in.radiusI + s);
+    const auto rj = kMembers ? hn::GatherIndex(d, in.radius, J) : hn::LoadU(d, in.radiusJ + s);
     // touchDiscs()
     const auto dx = hn::Sub(xj, xi), dy = hn::Sub(yj, yi);
     const auto dist2 = hn::MulAdd(dx, dx, hn::Mul(dy, dy));
     const auto reach = hn::Add(ri, rj);
     const auto touchingRange = hn::And(hn::Lt(dist2, hn::Mul(reach, reach)), hn::Gt(dist2, zero));
     if (hn::AllFalse(d, touchingRange)) {  // a whole vector apart: common in a loose region
-      hn::StoreU(zero, d, history + s);
-      hn::StoreU(zero, d, fnOf + s);
-      hn::StoreU(zero, d, ftOf + s);
-      hn::StoreU(zero, d, overlapOf + s);
+      hn::StoreU(zero, d, in.history + s);
+      hn::StoreU(zero, d, in.fn + s);
+      hn::StoreU(zero, d, in.ft + s);
+      hn::StoreU(zero, d, in.overlap + s);
       if constexpr (kRollingHistory) hn::StoreU(zero, d, in.rollingHistory + s);
       if (defers) {
         for (size_t l = 0; l < lanes; ++l) {
@@ -118,9 +107,9 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     // contactForce(DiscContact): the relative motion at the contact.
     const auto BI = kMembers ? hn::LoadU(di, bodyI + s) : I, BJ = kMembers ? hn::LoadU(di, bodyJ + s) : J;
     const auto BI2 = kMembers ? hn::Add(BI, BI) : I2, BJ2 = kMembers ? hn::Add(BJ, BJ) : J2;
-    const auto vxi = hn::GatherIndex(d, velocity, BI2), vyi = hn::GatherIndex(d, velocity + 1, BI2);
-    const auto vxj = hn::GatherIndex(d, velocity, BJ2), vyj = hn::GatherIndex(d, velocity + 1, BJ2);
-    const auto wi = hn::GatherIndex(d, spinOf, BI), wj = hn::GatherIndex(d, spinOf, BJ);
+    const auto vxi = hn::GatherIndex(d, in.velocity, BI2), vyi = hn::GatherIndex(d, in.velocity + 1, BI2);
+    const auto vxj = hn::GatherIndex(d, in.velocity, BJ2), vyj = hn::GatherIndex(d, in.velocity + 1, BJ2);
+    const auto wi = hn::GatherIndex(d, in.spin, BI), wj = hn::GatherIndex(d, in.spin, BJ);
     auto dvx = hn::Sub(vxj, vxi), dvy = hn::Sub(vyj, vyi);
     if constexpr (kPeriodic) {  // the image's affine velocity relative to i: L d, d = x_j + h n − x_i
       const double* L = in.velocityGradient;
@@ -140,12 +129,12 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     const auto vn = hn::MulAdd(dvx, nx, hn::Mul(dvy, ny));
     const auto vt = hn::Sub(hn::MulSub(dvy, nx, hn::Mul(dvx, ny)), spin);
     // The law (contact_law.hpp).
-    const auto dampN = hn::LoadU(d, dampNOf + s);
+    const auto dampN = hn::LoadU(d, in.dampN + s);
     const auto fn = hn::NegMulAdd(dampN, vn, hn::Mul(kn, overlap));
-    auto h = hn::LoadU(d, history + s);
+    auto h = hn::LoadU(d, in.history + s);
     auto ft = zero;
     if constexpr (kFrictional) {
-      const auto dampT = hn::LoadU(d, dampTOf + s);
+      const auto dampT = hn::LoadU(d, in.dampT + s);
       h = hn::MulAdd(vt, dt, h);
       ft = hn::NegMulAdd(dampT, vt, hn::Mul(negKt, h));
       const auto cap = hn::IfThenElseZero(hn::Gt(fn, zero), hn::Mul(mu, fn));
@@ -182,15 +171,11 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
     hn::Store(fy, d, out + lanes);
     hn::Store(ti, d, out + 2 * lanes);
     hn::Store(tj, d, out + 3 * lanes);
-    static_assert(hn::MaxLanes(d) <= 16, "a block's touching lanes fit in 16 mask bits");
     std::uint8_t bits[8] = {};
     hn::StoreMaskBits(d, touching, bits);
     if (!defers) {
-      // The touching lanes in order, by their mask bits: the loop's exit mispredicts about once
-      // a block, where a test per lane mispredicts wherever touching and apart lanes alternate.
-      for (unsigned touchingLanes = bits[0] | (static_cast<unsigned>(bits[1]) << 8); touchingLanes != 0;
-           touchingLanes &= touchingLanes - 1) {
-        const int l = __builtin_ctz(touchingLanes);
+      for (size_t l = 0; l < lanes; ++l) {
+        if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
         const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];
         force[2 * pi] -= out[l];
         force[2 * pi + 1] -= out[lanes + l];
@@ -226,10 +211,10 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       }
     }
     // The pair's state (a pair apart keeps nothing).
-    hn::StoreU(hn::IfThenElseZero(touching, h), d, history + s);
-    hn::StoreU(hn::IfThenElseZero(touching, fn), d, fnOf + s);
-    hn::StoreU(hn::IfThenElseZero(touching, ft), d, ftOf + s);
-    hn::StoreU(hn::IfThenElseZero(touching, overlap), d, overlapOf + s);
+    hn::StoreU(hn::IfThenElseZero(touching, h), d, in.history + s);
+    hn::StoreU(hn::IfThenElseZero(touching, fn), d, in.fn + s);
+    hn::StoreU(hn::IfThenElseZero(touching, ft), d, in.ft + s);
+    hn::StoreU(hn::IfThenElseZero(touching, overlap), d, in.overlap + s);
     if constexpr (kRollingHistory) hn::StoreU(hn::IfThenElseZero(touching, hr), d, in.rollingHistory + s);
   }
 }
