@@ -28,6 +28,7 @@ HWY_INLINE void advanceOne(ParticleStore& p, double dt, int k) {
 void LeapfrogDiscs(ParticleStore& p, double dt, int begin, int end) {
   const hn::ScalableTag<double> d;
   const hn::RebindToUnsigned<decltype(d)> du;
+  const hn::RebindToSigned<decltype(d)> di;
   const hn::Rebind<std::uint32_t, decltype(d)> d32;
   const hn::Rebind<std::uint8_t, decltype(d)> d8;
   const int lanes = static_cast<int>(hn::Lanes(d));
@@ -43,33 +44,47 @@ void LeapfrogDiscs(ParticleStore& p, double dt, int begin, int end) {
   const std::uint8_t* const motion = reinterpret_cast<const std::uint8_t*>(p.motion.data());
   const auto step = hn::Set(d, dt);
   const auto zero = hn::Zero(d);
-  const auto gx = hn::Set(d, p.gravity.x()), gy = hn::Set(d, p.gravity.y());
   const auto dynamic = hn::Zero(du);  // Motion::Dynamic
+  // Vectors of x y pairs (x0 y0 x1 y1 …) are read and written as they lie; a per-particle
+  // value reaches both of its lanes by a table lookup (0 0 1 1 … for the first half of the
+  // particles, then the second): two shuffles a vector where deinterleaving took four.
+  HWY_ALIGN std::int64_t pairLanes[2 * hn::MaxLanes(d)];
+  HWY_ALIGN double gravity[hn::MaxLanes(d)];
+  for (int l = 0; l < 2 * lanes; ++l) pairLanes[l] = l / 2;
+  for (int l = 0; l < lanes; ++l) gravity[l] = l % 2 ? p.gravity.y() : p.gravity.x();
+  const auto lower = hn::IndicesFromVec(d, hn::Load(di, pairLanes));
+  const auto upper = hn::IndicesFromVec(d, hn::Load(di, pairLanes + lanes));
+  const auto g = hn::Load(d, gravity);
   int k = begin;
   for (; k + lanes <= end; k += lanes) {
-    hn::Vec<decltype(d)> vx, vy, fx, fy, px, py;
-    hn::LoadInterleaved2(d, v + 2 * k, vx, vy);
-    hn::LoadInterleaved2(d, f + 2 * k, fx, fy);
-    hn::LoadInterleaved2(d, x + 2 * k, px, py);
+    double* const v0 = v + 2 * k;
+    double* const v1 = v0 + lanes;
+    double* const f0 = f + 2 * k;
+    double* const f1 = f0 + lanes;
+    double* const x0 = x + 2 * k;
+    double* const x1 = x0 + lanes;
     // v += f (m⁻¹ dt); ω += τ (I⁻¹ dt); x += v dt
     const auto kick = hn::Mul(hn::LoadU(d, invMass + k), step);
-    vx = hn::Add(vx, hn::Mul(fx, kick));
-    vy = hn::Add(vy, hn::Mul(fy, kick));
+    const auto vLower = hn::Add(hn::LoadU(d, v0), hn::Mul(hn::LoadU(d, f0), hn::TableLookupLanes(kick, lower)));
+    const auto vUpper = hn::Add(hn::LoadU(d, v1), hn::Mul(hn::LoadU(d, f1), hn::TableLookupLanes(kick, upper)));
+    hn::StoreU(vLower, d, v0);
+    hn::StoreU(vUpper, d, v1);
+    hn::StoreU(hn::Add(hn::LoadU(d, x0), hn::Mul(vLower, step)), d, x0);
+    hn::StoreU(hn::Add(hn::LoadU(d, x1), hn::Mul(vUpper, step)), d, x1);
     const auto spin = hn::Add(hn::LoadU(d, w + k), hn::Mul(hn::LoadU(d, tau + k), hn::Mul(hn::LoadU(d, invInertia + k), step)));
-    px = hn::Add(px, hn::Mul(vx, step));
-    py = hn::Add(py, hn::Mul(vy, step));
     // A disc's angle moves only where it spins (adding a zero turn could flip a −0).
     const auto a = hn::LoadU(d, angle + k);
     hn::StoreU(hn::IfThenElse(hn::Ne(spin, zero), hn::Add(a, hn::Mul(spin, step)), a), d, angle + k);
     hn::StoreU(spin, d, w + k);
-    hn::StoreInterleaved2(vx, vy, d, v + 2 * k);
-    hn::StoreInterleaved2(px, py, d, x + 2 * k);
-    // The next force starts from the weight (dynamic particles) or zero.
-    const auto isDynamic = hn::RebindMask(d, hn::Eq(hn::PromoteTo(du, hn::PromoteTo(d32, hn::LoadU(d8, motion + k))), dynamic));
-    const auto m = hn::LoadU(d, mass + k);
-    hn::StoreInterleaved2(hn::IfThenElseZero(isDynamic, hn::Mul(m, gx)), hn::IfThenElseZero(isDynamic, hn::Mul(m, gy)), d,
-                          f + 2 * k);
     hn::StoreU(zero, d, tau + k);
+    // The next force starts from the weight m g (dynamic particles) or +0.
+    const auto isDynamic = hn::VecFromMask(
+        d, hn::RebindMask(d, hn::Eq(hn::PromoteTo(du, hn::PromoteTo(d32, hn::LoadU(d8, motion + k))), dynamic)));
+    const auto m = hn::LoadU(d, mass + k);
+    hn::StoreU(hn::IfThenElseZero(hn::MaskFromVec(hn::TableLookupLanes(isDynamic, lower)),
+                                  hn::Mul(hn::TableLookupLanes(m, lower), g)), d, f0);
+    hn::StoreU(hn::IfThenElseZero(hn::MaskFromVec(hn::TableLookupLanes(isDynamic, upper)),
+                                  hn::Mul(hn::TableLookupLanes(m, upper), g)), d, f1);
   }
   for (; k < end; ++k) advanceOne(p, dt, k);
 }
