@@ -77,7 +77,7 @@ void ContactSolver::initialize() {
 }
 
 bool ContactSolver::movedOutOfSkin(int begin, int end) const {
-  return neighbors_.outdated(particles_.position, begin, end);
+  return neighbors_.outdated(particles_.position, begin, end, simdPath() == SimdPath::Wide);
 }
 
 void ContactSolver::clearTangentialHistory() {
@@ -377,6 +377,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   if (discBatchStale_) {
     discBatch_.build(neighbors_, particles_.size(), material_.rollingFriction > 0 ? &rollingPairs_ : nullptr,
                      particles_.cell.has_value(), pool_ ? pool_->threads() : 1);
+    discBatch_.layRadii(particles_.boundingRadius.data());
     discBatchStale_ = false;
   }
   DiscPairBatch& b = discBatch_;
@@ -391,6 +392,8 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
       b.overlap(), material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
       std::is_same_v<decltype(law.tangential), CundallStrack>, f->data(), tau, b.ends(), b.iEnd(), b.jEnd(),
       b.blockDefers()};
+  in.radiusI = b.radiusI();
+  in.radiusJ = b.radiusJ();
   if (b.rolls()) {  // rolling resistance: the couple's lanes (the walls' couples are the scalar law's, below)
     in.rollingHistory = b.rollingHistory();
     in.rollingStiffness = b.rollingStiffness();

@@ -127,6 +127,15 @@ void DiscPairBatch::build(const NeighborList& list, int particles, const std::ve
   ends_.assign(4 * (static_cast<size_t>(next) + 1), -0.0);
 }
 
+void DiscPairBatch::layRadii(const double* radius) {
+  radiusI_.resize(i_.size());
+  radiusJ_.resize(j_.size());
+  for (size_t s = 0; s < i_.size(); ++s) {
+    radiusI_[s] = radius[i_[s]];
+    radiusJ_[s] = radius[j_[s]];
+  }
+}
+
 void DiscPairBatch::writeBack(std::vector<PairState>& pairs) const {
   for (int s = 0; s < slots_; ++s) {
     PairState& p = pairs[static_cast<size_t>(pair_[static_cast<size_t>(s)])];

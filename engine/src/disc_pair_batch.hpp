@@ -31,6 +31,10 @@ class DiscPairBatch {
   /// `threads`: how many slices the work is split into (parallelFor's, over workItems()).
   void build(const NeighborList& list, int particles, const std::vector<RollingResistance::Pair>* rolling = nullptr,
              bool periodic = false, int threads = 1);
+  /// Copies each slot's two radii (`radius` per particle) beside its indices: the kernel then
+  /// loads them in order instead of gathering them (the radii are fixed while the list is).
+  /// Call after build().
+  void layRadii(const double* radius);
   /// The work items: the slot blocks, then the wall pairs in groups of kWallPairsPerItem.
   int blocks() const { return padded_ / kDiscPairBlock; }
   int workItems() const { return blocks() + (static_cast<int>(wallPairs_.size()) + kWallPairsPerItem - 1) / kWallPairsPerItem; }
@@ -48,6 +52,8 @@ class DiscPairBatch {
   int paddedSlots() const { return padded_; }
   const std::int64_t* i() const { return i_.data(); }
   const std::int64_t* j() const { return j_.data(); }
+  const double* radiusI() const { return radiusI_.data(); }
+  const double* radiusJ() const { return radiusJ_.data(); }
   const double* dampN() const { return dampN_.data(); }
   const double* dampT() const { return dampT_.data(); }
   double* history() { return history_.data(); }
@@ -98,6 +104,7 @@ class DiscPairBatch {
   std::vector<std::int64_t> i_, j_;
   std::vector<int> pair_;  // the slot's pair in the list
   std::vector<double> dampN_, dampT_, history_, fn_, ft_, overlap_;
+  std::vector<double> radiusI_, radiusJ_;  // layRadii()
   bool rolls_ = false;
   bool periodic_ = false;
   std::vector<double> imageN1_, imageN2_;  // padding: n = 0

@@ -30,6 +30,20 @@ HWY_INLINE V reciprocalSqrt(D d, V x) {
   return y;
 }
 
+// to[0..1] += share[0..1] (kSign 1) or −= (kSign −1), both lanes in one instruction where
+// the target has two-lane vectors; each lane rounds as a scalar add does.
+template <int kSign>
+HWY_INLINE void addShare(double* to, const double* share) {
+#if HWY_TARGET == HWY_SCALAR
+  to[0] = kSign > 0 ? to[0] + share[0] : to[0] - share[0];
+  to[1] = kSign > 0 ? to[1] + share[1] : to[1] - share[1];
+#else
+  const hn::Full128<double> pair;
+  const auto v = hn::LoadU(pair, to), by = hn::LoadU(pair, share);
+  hn::StoreU(kSign > 0 ? hn::Add(v, by) : hn::Sub(v, by), pair, to);
+#endif
+}
+
 // What a step's slots carry beside the disc law: nothing, rolling resistance (its couple; or,
 // in a frictionless step, only its relative rotation, kept and cleared as the baseline does),
 // or clump members (levers from their bodies' centroids).
@@ -74,7 +88,10 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       xj = hn::Add(xj, hn::MulAdd(hn::Set(d, in.cellEdges[0]), n1, hn::Mul(hn::Set(d, in.cellEdges[1]), n2)));
       yj = hn::Add(yj, hn::MulAdd(hn::Set(d, in.cellEdges[2]), n1, hn::Mul(hn::Set(d, in.cellEdges[3]), n2)));
     }
-    const auto ri = hn::GatherIndex(d, in.radius, I), rj = hn::GatherIndex(d, in.radius, J);
+    // A disc's radius sits beside its slot (DiscPairBatch::layRadii): two loads instead of two
+    // gathers. Clump members' radii are gathered.
+    const auto ri = kMembers ? hn::GatherIndex(d, in.radius, I) : hn::LoadU(d, in.radiusI + s);
+    const auto rj = kMembers ? hn::GatherIndex(d, in.radius, J) : hn::LoadU(d, in.radiusJ + s);
     // touchDiscs()
     const auto dx = hn::Sub(xj, xi), dy = hn::Sub(yj, yi);
     const auto dist2 = hn::MulAdd(dx, dx, hn::Mul(dy, dy));
@@ -164,24 +181,26 @@ void forces(const DiscPairKernelInput& in, int begin, int end) {
       tj = hn::Add(tj, hn::MulSub(lxj, fy, hn::Mul(lyj, fx)));
     }
     // Each end's share: −F on i, F on j, each touching pair's at once, in slot (= pair) order.
-    hn::Store(fx, d, out);
-    hn::Store(fy, d, out + lanes);
     hn::Store(ti, d, out + 2 * lanes);
     hn::Store(tj, d, out + 3 * lanes);
     std::uint8_t bits[8] = {};
     hn::StoreMaskBits(d, touching, bits);
     if (!defers) {
+      // Each lane's fx fy side by side, so that an end's force takes one two-lane subtract or
+      // add (each lane rounds as the scalar one did).
+      double* const forceXY = out + 4 * lanes;
+      hn::StoreInterleaved2(fx, fy, d, forceXY);
       for (size_t l = 0; l < lanes; ++l) {
         if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
         const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];
-        force[2 * pi] -= out[l];
-        force[2 * pi + 1] -= out[lanes + l];
+        addShare<-1>(force + 2 * pi, forceXY + 2 * l);
         torque[pi] -= out[2 * lanes + l];
-        force[2 * pj] += out[l];
-        force[2 * pj + 1] += out[lanes + l];
+        addShare<1>(force + 2 * pj, forceXY + 2 * l);
         torque[pj] += out[3 * lanes + l];
       }
-    } else {  // an end that waits takes its record, touching or not (x − y is x + (−y): stored negated on i)
+    } else {
+      hn::Store(fx, d, out);
+      hn::Store(fy, d, out + lanes);  // an end that waits takes its record, touching or not (x − y is x + (−y): stored negated on i)
       for (size_t l = 0; l < lanes; ++l) {
         const bool touches = (bits[l / 8] >> (l % 8)) & 1;
         const std::int64_t pi = bodyI[s + l], pj = bodyJ[s + l];

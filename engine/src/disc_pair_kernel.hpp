@@ -59,6 +59,10 @@ struct DiscPairKernelInput {
   const double* rollingCompliance = nullptr;
   const double* rollingCapPerForce = nullptr;
   const double* rollingDamping = nullptr;
+  // Discs (required without bodyI): per slot, the radii of i and j (DiscPairBatch::layRadii),
+  // loaded in order where the members' kernel gathers `radius`.
+  const double* radiusI = nullptr;
+  const double* radiusJ = nullptr;
   // Clumps' member discs (member_contacts.hpp), one thread only; null for a disc scene. Then
   // position and radius are the members', i and j name members, and the slots' bodies (whose
   // velocity and spin are read, and to which force and torque go) are bodyI and bodyJ; each

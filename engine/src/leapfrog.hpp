@@ -6,9 +6,10 @@ namespace grainlab {
 
 /// Kick and drift particles [begin, end) by dt from the forces on them, then start their next
 /// force from the body force: one pass, so each particle's data is loaded once (three loops
-/// over the particles took a fifth of a disc pile's step). With `incrementalRotation` (the wide
-/// path) a polygon's cos and sin are advanced by its turn (incremental_rotation.hpp) instead of
-/// taken from its angle by sincos.
-void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool incrementalRotation = false);
+/// over the particles took a fifth of a disc pile's step). On the wide path (`widePath`) a
+/// polygon's cos and sin are advanced by its turn (incremental_rotation.hpp) instead of taken
+/// from its angle by sincos, and a discs-only scene is stepped several discs per instruction
+/// (disc_leapfrog_kernel.hpp: the same bits).
+void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool widePath = false);
 
 }  // namespace grainlab

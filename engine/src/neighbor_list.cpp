@@ -4,14 +4,17 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "skin_check_kernel.hpp"
+
 namespace grainlab {
 
-bool NeighborList::outdated(std::span<const Vec2> positions, int begin, int end) const {
+bool NeighborList::outdated(std::span<const Vec2> positions, int begin, int end, bool widePath) const {
   if (reference_.size() != positions.size()) return true;
   // Half the skin, squared; in a periodic cell, half of what the cell's own motion left of it.
   const double free = skin_ - imageDrift_;
   if (free <= 0) return true;
   const double limit2 = 0.25 * free * free;
+  if (widePath) return movedBeyondWide(positions.data()->data(), reference_.data()->data(), begin, end, limit2);
   for (int k = begin; k < end; ++k) {
     if ((positions[k] - reference_[k]).squaredNorm() > limit2) return true;
   }

@@ -39,7 +39,8 @@ class NeighborList {
   /// True if some particle in [begin, end) has moved more than half the skin since the last
   /// build, or the list was built for another number of particles. Reads only that range, so
   /// each thread can check the particles it has just moved while they are in its cache.
-  bool outdated(std::span<const Vec2> positions, int begin, int end) const;
+  /// `widePath`: several particles per instruction (skin_check_kernel.hpp; the same answer).
+  bool outdated(std::span<const Vec2> positions, int begin, int end, bool widePath = false) const;
   /// Rebuilds if `moved` (some range was outdated()), if invalidated, or if the skin changed;
   /// returns true if it did.
   bool update(std::span<const Vec2> positions, std::span<const double> boundingRadii,
