@@ -10,6 +10,13 @@
 #include "contact_solver.hpp"
 
 namespace grainlab {
+namespace {
+
+[[gnu::noinline]] Vec2 minimumImageOutOfLine(const PeriodicCell& cell, const Vec2& branch) {
+  return cell.minimumImage(branch);
+}
+
+}  // namespace
 
 StressTensor ContactSolver::contactStress(std::span<const Vec2> centroids, std::span<const unsigned char> inside,
                                           double area, const PeriodicCell* cell) const {
@@ -27,16 +34,12 @@ StressTensor ContactSolver::contactStress(std::span<const Vec2> centroids, std::
   const double shortBranch = cell ? 0.49 * cell->minWidth() : 0;
   const double shortBranch2 = shortBranch * shortBranch;
   double s11 = 0, s12 = 0, s21 = 0, s22 = 0;
-  auto add = [&](const Vec2& f, const Vec2& branch) {
-    // minimumImage(branch) is branch + h·0 for a short one: the same value (adding a zero
-    // changes at most the sign of a zero component, which no sum below can show).
-    const Vec2 l = !cell || branch.squaredNorm() < shortBranch2 ? branch : cell->minimumImage(branch);
-    s11 += f.x() * l.x();
-    s12 += f.x() * l.y();
-    s21 += f.y() * l.x();
-    s22 += f.y() * l.y();
+  // minimumImage(branch) is branch + h·0 for a short one: the same value (adding a zero changes
+  // at most the sign of a zero component, which no sum below can show). Only a branch across an
+  // edge takes the search, out of line, so the sums stay in registers through the loop.
+  auto imageOf = [&](const Vec2& branch) {
+    return !cell || branch.squaredNorm() < shortBranch2 ? branch : minimumImageOutOfLine(*cell, branch);
   };
-
   // After a wide step the disc-disc pairs' last forces are the batch's slots, one per such pair
   // in pair order (DiscPairBatch::build); the wall pairs' are the list's own.
   const bool fromSlots = wideStateAhead_;
@@ -69,9 +72,22 @@ StressTensor ContactSolver::contactStress(std::span<const Vec2> centroids, std::
     }
     // The force particle i exerts on its neighbour; j exerts the opposite one on i.
     const Vec2 f = fn * g.normal + ft * perp(g.normal);
-    if (inside[static_cast<size_t>(p.i)] != 0) add(f, g.point - centroids[static_cast<size_t>(p.i)]);
+    if (inside[static_cast<size_t>(p.i)] != 0) {
+      const Vec2 l = imageOf(g.point - centroids[static_cast<size_t>(p.i)]);
+      s11 += f.x() * l.x();
+      s12 += f.x() * l.y();
+      s21 += f.y() * l.x();
+      s22 += f.y() * l.y();
+    }
     // A wall has no centroid and is not part of the specimen: only particle i's end counts.
-    if (p.j >= 0 && inside[static_cast<size_t>(p.j)] != 0) add(-f, g.point - centroids[static_cast<size_t>(p.j)]);
+    if (p.j >= 0 && inside[static_cast<size_t>(p.j)] != 0) {
+      const Vec2 l = imageOf(g.point - centroids[static_cast<size_t>(p.j)]);
+      const Vec2 onJ = -f;
+      s11 += onJ.x() * l.x();
+      s12 += onJ.x() * l.y();
+      s21 += onJ.y() * l.x();
+      s22 += onJ.y() * l.y();
+    }
   }
   const double inv = 1.0 / area;
   return StressTensor{s11 * inv, s12 * inv, s21 * inv, s22 * inv};
