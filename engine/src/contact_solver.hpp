@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "contact_geometry.hpp"
@@ -18,6 +19,7 @@
 #include "grainlab/material.hpp"
 #include "grainlab/particle_store.hpp"
 #include "grainlab/profile.hpp"
+#include "grainlab/stress.hpp"
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
 #include "polygon_face_batch.hpp"
@@ -51,6 +53,11 @@ class ContactSolver {
   void clearTangentialHistory();
 
   void contacts(std::vector<ContactRecord>& out) const;
+  /// grainlab::contactStress over contacts(), with the same terms in the same order (the same
+  /// bits), summed straight from the pairs' state: no records, no write-back of the wide
+  /// path's state (contact_solver_stress.cpp).
+  StressTensor contactStress(std::span<const Vec2> centroids, std::span<const unsigned char> inside, double area,
+                             const PeriodicCell* cell) const;
   /// Each particle's number of touching contacts, as of the last force computation.
   void countContacts(std::vector<int>& count) const;
   double elasticEnergy() const;

@@ -37,6 +37,11 @@ class DemSolver final : public Solver {
   void contacts(std::vector<ContactRecord>& out) const override {
     members_ ? members_->contacts(out) : contacts_.contacts(out);
   }
+  StressTensor contactStress(std::span<const Vec2> centroids, std::span<const unsigned char> inside, double area,
+                             const PeriodicCell* cell) const override {
+    return members_ ? Solver::contactStress(centroids, inside, area, cell)
+                    : contacts_.contactStress(centroids, inside, area, cell);
+  }
   double elasticEnergy() const override { return members_ ? members_->elasticEnergy() : contacts_.elasticEnergy(); }
   void checkOverlaps(std::int64_t step, double dt, double criticalDt) const override {
     members_ ? members_->checkOverlaps(step, dt, criticalDt) : contacts_.checkOverlaps(step, dt, criticalDt);

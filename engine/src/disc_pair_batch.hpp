@@ -60,6 +60,10 @@ class DiscPairBatch {
   double* fn() { return fn_.data(); }
   double* ft() { return ft_.data(); }
   double* overlap() { return overlap_.data(); }
+  /// The same, read only: the state the slots hold after a step, in pair order (disc-disc pairs).
+  const double* fn() const { return fn_.data(); }
+  const double* ft() const { return ft_.data(); }
+  const double* overlap() const { return overlap_.data(); }
   /// Rolling resistance's slots (null without it): θ_r, and the constants k_r, 1/k_r, μ_r R*, c_r.
   double* rollingHistory() { return rolls_ ? rollingHistory_.data() : nullptr; }
   const double* rollingStiffness() const { return rollingStiffness_.data(); }

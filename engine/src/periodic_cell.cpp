@@ -1,5 +1,6 @@
 #include "grainlab/periodic_cell.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +12,9 @@ namespace {
 
 // The integer nearest to a projection ratio; 0 while |ratio| <= 1/2 (no change at exactly a
 // half, so a cell tilted by half an edge stays as it is).
+// (0.49)²: a branch shorter than 0.49 of the smaller width is its own nearest image.
+constexpr double kShortBranch2 = 0.49 * 0.49;
+
 int nearestMultiple(double ratio) { return std::abs(ratio) > 0.5 ? static_cast<int>(std::lround(ratio)) : 0; }
 
 }  // namespace
@@ -40,11 +44,14 @@ Vec2 PeriodicCell::wrap(const Vec2& x) const {
 }
 
 ImageShift PeriodicCell::nearestImage(const Vec2& d) const {
-  // Every lattice vector h n (n ≠ 0) is at least the smaller width long, so a d shorter than
+  // Every lattice vector h n (n ≠ 0) is at least the smaller width w long, so a d shorter than
   // half of it is strictly the nearest of its images: most branch vectors of the stress sums
-  // (the cell's servo measures them every few steps) are, and skip the search below.
-  const double w = minWidth();
-  if (4 * d.squaredNorm() < w * w) return {};
+  // (the cell's servo measures them every few steps) are, and skip the search below. The test
+  // takes no root or quotient (w_k = A / |h_k|, so |d| < c w_k is d² |h_k|² < c² A²) and keeps
+  // a margin against rounding (c = 0.49).
+  const double longest2 = std::max(h_.col(0).squaredNorm(), h_.col(1).squaredNorm());
+  const double a = area();
+  if (d.squaredNorm() * longest2 < kShortBranch2 * (a * a)) return {};
   // In a reduced basis the nearest lattice point to −d is within one step of the rounded
   // fractional coordinates; in a tilted one it can be many steps away. Reduce a copy (h M),
   // search there, and map the answer back (n = M m).

@@ -50,9 +50,8 @@ CellStage::CellStage(std::string name, const CellLoading& loading, World& world,
 }
 
 const StressTensor& CellStage::measureStress() {
-  const PeriodicCell& cell = *world_.periodicCell();
-  world_.contacts(contacts_);
-  stress_ = contactStress(contacts_, world_.positions(), inside_, cell.area(), &cell);
+  // The same sum as contactStress over world_.contacts(), without the records (same bits).
+  stress_ = world_.contactStress(inside_, world_.periodicCell()->area());
   return stress_;
 }
 

@@ -103,7 +103,6 @@ class CellStage : public Stage {
   CellServo servo11_, servo22_, servo12_;
   StressTensor stress_;
   Eigen::Matrix2d D_ = Eigen::Matrix2d::Zero();
-  std::vector<ContactRecord> contacts_;
   std::vector<unsigned char> inside_;
 };
 

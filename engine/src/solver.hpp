@@ -5,9 +5,11 @@
 // else it needs (neighbour lists, contact history, a b2World) to itself. The World owns the
 // store, the material, the clock and the checks, and knows nothing of either engine.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "grainlab/contact.hpp"
+#include "grainlab/stress.hpp"
 
 namespace grainlab {
 
@@ -39,6 +41,14 @@ class Solver {
 
   /// The touching contacts as of the last force computation, in a stable order.
   virtual void contacts(std::vector<ContactRecord>& out) const = 0;
+  /// The contact stress of those contacts (grainlab::contactStress over contacts()); a solver
+  /// may sum it without building the records, to the same bits.
+  virtual StressTensor contactStress(std::span<const Vec2> centroids, std::span<const unsigned char> inside,
+                                     double area, const PeriodicCell* cell) const {
+    std::vector<ContactRecord> records;
+    contacts(records);
+    return grainlab::contactStress(records, centroids, inside, area, cell);
+  }
   /// Energy stored in the contacts, J per metre.
   virtual double elasticEnergy() const = 0;
   /// Throws SimulationError naming the pair if two bodies overlap by more than half the

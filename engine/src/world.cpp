@@ -171,4 +171,9 @@ void World::contacts(std::vector<ContactRecord>& out) const {
   if (prepared_) solver_->contacts(out);
 }
 
+StressTensor World::contactStress(std::span<const unsigned char> inside, double area) const {
+  if (!prepared_) return grainlab::contactStress({}, positions(), inside, area, periodicCell());
+  return solver_->contactStress(positions(), inside, area, periodicCell());
+}
+
 }  // namespace grainlab

@@ -15,6 +15,7 @@
 #include "grainlab/particle_store.hpp"
 #include "grainlab/profile.hpp"
 #include "grainlab/shape.hpp"
+#include "grainlab/stress.hpp"
 #include "grainlab/wall.hpp"
 
 namespace grainlab {
@@ -151,6 +152,9 @@ class World {
 
   /// The touching contacts as of the last force computation, in a stable order.
   void contacts(std::vector<ContactRecord>& out) const;
+  /// grainlab::contactStress of those contacts at the particles' positions (in a periodic cell,
+  /// with its minimum-image branch vectors), to the same bits, without building the records.
+  StressTensor contactStress(std::span<const unsigned char> inside, double area) const;
   /// Σ ½ m v² + ½ I ω² over dynamic particles, J per metre.
   double kineticEnergy() const;
   /// Energy stored in the contact springs, J per metre (0 for box2d: rigid contacts).
