@@ -248,8 +248,10 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
 
 // The wide path's forEachTouching in a scene with polygons: the polygon pairs whose kept
 // features are a face against an edge are measured in a batch (polygon_face_batch.hpp), to
-// measurePolygons' bits; every other pair as pairGeometry measures it. The same calls in the
-// same order as forEachTouching, so the same bits.
+// measurePolygons' bits; every other pair as pairGeometry measures it. Outside a periodic cell
+// the batch applies the law too (to contactForce's bits) and hands on each pair's force
+// (PolygonFaceForce); in a cell the law is the scalar one. The same calls in the same order as
+// forEachTouching, so the same bits.
 template <bool kPeriodic, class Force, class Apart>
 void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Apart&& apart) {
   PairState* pairs = neighbors_.pairs().data();
@@ -285,8 +287,37 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
       }
       const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
       const int si = shapeIndex[i], sj = shapeIndex[j];
-      if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) batch.add(slot++, k, cache, si, pi, sj, pj, *polygonCollider_);
-      else batch.contact(k).overlap = -1;
+      if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) {
+        if constexpr (!kPeriodic) batch.setParticles(slot, i, j);
+        batch.add(slot++, k, cache, si, pi, sj, pj, *polygonCollider_);
+      } else {
+        batch.contact(k).overlap = -1;
+      }
+    }
+    if constexpr (!kPeriodic) {
+      batch.measureForces(*polygonCollider_, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(),
+                          pairs, first, slot - first);
+      int next = first;  // the chunk's slots hold its batched pairs in pair order
+      for (int k = first; k < last; ++k) {
+        if (next < slot && batch.pairOf(next) == k) {
+          const int s = next++;
+          if (!batch.touches(s)) {
+            clearContact(pairs[k]);
+            apart(k);
+            continue;
+          }
+          force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
+          continue;
+        }
+        const ContactGeometry& g = batch.contact(k);
+        if (g.overlap <= 0) {
+          clearContact(pairs[k]);
+          apart(k);
+          continue;
+        }
+        force(k, g);
+      }
+      continue;
     }
     batch.measure(*polygonCollider_, first, slot - first);
     for (int k = first; k < last; ++k) {
@@ -543,7 +574,11 @@ void ContactSolver::computeForces(double dt, bool moved) {
                                                     particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
   widePolygons_ = polygons && simdPath() == SimdPath::Wide;
-  if (widePolygons_) polygonBatch_.resize(neighbors_.pairs().size());
+  if (widePolygons_) {
+    polygonBatch_.resize(neighbors_.pairs().size());
+    polygonLaw_ = {material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
+                   material_.friction != 0};
+  }
   if (rebuilt) {
     assignDamping();
     if (material_.rollingFriction > 0) assignRollingPairs();

@@ -98,6 +98,14 @@ class ContactSolver {
   template <bool kPeriodic, class Law>
   void contactForce(PairState& pair, const DiscContact& c, const Law& law, double dt, Vec2& force,
                     double& torqueI, double& torqueJ) const;
+  // A face-against-edge pair whose law the batch applied: its answer as it is.
+  template <bool kPeriodic, class Law>
+  void contactForce(PairState&, const PolygonFaceForce& b, const Law&, double, Vec2& force, double& torqueI,
+                    double& torqueJ) const {
+    force = b.force;
+    torqueI = b.torqueI;
+    torqueJ = b.torqueJ;
+  }
 
   ParticleStore& particles_;
   const Material& material_;
@@ -135,6 +143,7 @@ class ContactSolver {
   // The wide path in a scene with polygons: face-against-edge pairs measured in batches.
   PolygonFaceBatch polygonBatch_;
   bool widePolygons_ = false;
+  PolygonFaceLaw polygonLaw_;  // this step's law, for the batch
 };
 
 }  // namespace grainlab

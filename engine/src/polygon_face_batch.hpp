@@ -15,6 +15,13 @@
 
 namespace grainlab {
 
+/// A batched pair's answer, as the pair loop hands it on: the force on j from i and the
+/// torques about i's and j's centroids (the pair's state is already updated).
+struct PolygonFaceForce {
+  Vec2 force;
+  double torqueI, torqueJ;
+};
+
 class PolygonFaceBatch {
  public:
   /// Room for `pairs` pairs.
@@ -26,6 +33,9 @@ class PolygonFaceBatch {
     face_.resize(pairs);
     edge_.resize(pairs);
     pair_.resize(pairs);
+    for (std::vector<std::int64_t>* v : {&i_, &j_}) v->resize(pairs);
+    for (std::vector<double>* v : {&fx_, &fy_, &torqueI_, &torqueJ_}) v->resize(pairs);
+    touching_.resize(pairs);
   }
   /// Pair k's contact: measured (after measure()) or as the caller wrote it.
   ContactGeometry& contact(int k) { return contacts_[static_cast<size_t>(k)]; }
@@ -58,6 +68,12 @@ class PolygonFaceBatch {
     __builtin_prefetch(collider.edgeTable() + edge_[s] + kEdgeRecord - 1);
   }
 
+  /// The particles i and j of the pair in `slot` (for measureForces()).
+  void setParticles(int slot, int i, int j) {
+    i_[static_cast<size_t>(slot)] = i;
+    j_[static_cast<size_t>(slot)] = j;
+  }
+
   /// Measures slots [begin, begin + count) into their pairs' contacts.
   void measure(const PolygonCollider& collider, int begin, int count) {
     if (count == 0) return;
@@ -68,12 +84,38 @@ class PolygonFaceBatch {
                                     collider.faceTable(), collider.edgeTable(), contacts_.data()};
     measurePolygonFaces(in, count);
   }
+  /// Measures slots [begin, begin + count) and applies `law` at each (the pairs' state in
+  /// `pairs` read and written in place): the slot's force(), torques and touches() (the
+  /// pairs' contacts are not written).
+  void measureForces(const PolygonCollider& collider, const PolygonFaceLaw& law, const double* velocity,
+                     const double* spin, PairState* pairs, int begin, int count) {
+    if (count == 0) return;
+    const auto s = static_cast<size_t>(begin);
+    const PolygonFaceKernelInput in{refX_.data() + s, refY_.data() + s, refC_.data() + s, refS_.data() + s,
+                                    incX_.data() + s, incY_.data() + s, incC_.data() + s, incS_.data() + s,
+                                    face_.data() + s, edge_.data() + s, normalSign_.data() + s, pair_.data() + s,
+                                    collider.faceTable(), collider.edgeTable(), contacts_.data()};
+    const PolygonFaceForceInput forces{i_.data() + s, j_.data() + s, velocity, spin, pairs, law,
+                                       fx_.data() + s, fy_.data() + s, torqueI_.data() + s, torqueJ_.data() + s,
+                                       touching_.data() + s};
+    measurePolygonFaceForces(in, forces, count);
+  }
+  /// After measureForces(): the pair in `slot`, whether it touches, the force on j from i, and
+  /// the torques about i's and j's centroids.
+  int pairOf(int slot) const { return pair_[static_cast<size_t>(slot)]; }
+  bool touches(int slot) const { return touching_[static_cast<size_t>(slot)] != 0; }
+  Vec2 force(int slot) const { return {fx_[static_cast<size_t>(slot)], fy_[static_cast<size_t>(slot)]}; }
+  double torqueI(int slot) const { return torqueI_[static_cast<size_t>(slot)]; }
+  double torqueJ(int slot) const { return torqueJ_[static_cast<size_t>(slot)]; }
 
  private:
   std::vector<ContactGeometry> contacts_;  // per pair
   std::vector<double> refX_, refY_, refC_, refS_, incX_, incY_, incC_, incS_, normalSign_;  // per slot
   std::vector<std::int64_t> face_, edge_;
   std::vector<std::int32_t> pair_;
+  std::vector<std::int64_t> i_, j_;
+  std::vector<double> fx_, fy_, torqueI_, torqueJ_;
+  std::vector<std::uint8_t> touching_;
 };
 
 }  // namespace grainlab

@@ -16,17 +16,107 @@ namespace grainlab {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The slots' inputs from one slot on.
+// The slots' inputs from one slot on (i and j only where the law is applied), and where the
+// first of them writes its forces.
 struct Lanes {
   const double *refX, *refY, *refC, *refS, *incX, *incY, *incC, *incS, *normalSign;
   const std::int64_t *face, *edge;
   const std::int32_t* pair;
+  const std::int64_t *i = nullptr, *j = nullptr;
+  size_t slot = 0;
 };
+
+// The law at one vector of contacts: ContactSolver::contactForce and lawForce for a pair of
+// polygons, lane by lane, in their operations and order (the scalar expression each line
+// follows is beside it). n is the normal from i to j, p the contact point; the touching lanes'
+// state goes back to their pairs and every valid lane's outputs to its slot.
+template <class Tag, class V>
+HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, const Lanes& at, size_t valid, V nx, V ny, V px,
+                          V py, V overlap, V faceA, V prx, V pry, V inx, V iny, const std::uint8_t* touchingBits) {
+  const hn::RebindToSigned<Tag> di;
+  constexpr size_t kMax = HWY_MAX_BYTES / sizeof(double);
+  const size_t lanes = hn::Lanes(d);
+  // The pairs' state, lane by lane (a pair's state is one cache line, read just before by
+  // the pair loop).
+  HWY_ALIGN double state[3 * kMax];
+  for (size_t l = 0; l < lanes; ++l) {
+    const PairState& p = f.pairs[at.pair[l]];
+    state[l] = p.dampN;
+    state[lanes + l] = p.dampT;
+    state[2 * lanes + l] = p.history.tangential;
+  }
+  const auto dampN = hn::Load(d, state), dampT = hn::Load(d, state + lanes);
+  auto history = hn::Load(d, state + 2 * lanes);
+  const auto I = hn::LoadU(di, at.i), J = hn::LoadU(di, at.j);
+  const auto vix = hn::GatherIndex(d, f.velocity, hn::Add(I, I)), viy = hn::GatherIndex(d, f.velocity + 1, hn::Add(I, I));
+  const auto vjx = hn::GatherIndex(d, f.velocity, hn::Add(J, J)), vjy = hn::GatherIndex(d, f.velocity + 1, hn::Add(J, J));
+  const auto wi = hn::GatherIndex(d, f.spin, I), wj = hn::GatherIndex(d, f.spin, J);
+  // i is the reference body where its face is the reference face (normal sign +1).
+  const auto isRef = hn::Gt(faceA, hn::Zero(d));
+  const auto xix = hn::IfThenElse(isRef, prx, inx), xiy = hn::IfThenElse(isRef, pry, iny);
+  const auto xjx = hn::IfThenElse(isRef, inx, prx), xjy = hn::IfThenElse(isRef, iny, pry);
+  // t = perp(n) = (−n_y, n_x); r_i = p − x_i; dv = −(v_i + ω_i × r_i), ω × r = (−ω r_y, ω r_x)
+  const auto tx = hn::Neg(ny), ty = nx;
+  const auto rix = hn::Sub(px, xix), riy = hn::Sub(py, xiy);
+  auto dvx = hn::Neg(hn::Add(vix, hn::Mul(hn::Neg(wi), riy)));
+  auto dvy = hn::Neg(hn::Add(viy, hn::Mul(wi, rix)));
+  // r_j = p − x_j; dv += v_j + ω_j × r_j
+  const auto rjx = hn::Sub(px, xjx), rjy = hn::Sub(py, xjy);
+  dvx = hn::Add(dvx, hn::Add(vjx, hn::Mul(hn::Neg(wj), rjy)));
+  dvy = hn::Add(dvy, hn::Add(vjy, hn::Mul(wj, rjx)));
+  // v_n = dv·n, v_t = dv·t; f_n = k_n δ − c_n v_n
+  const auto vn = hn::Add(hn::Mul(dvx, nx), hn::Mul(dvy, ny));
+  const auto vt = hn::Add(hn::Mul(dvx, tx), hn::Mul(dvy, ty));
+  const auto fn = hn::Sub(hn::Mul(hn::Set(d, f.law.normalStiffness), overlap), hn::Mul(dampN, vn));
+  auto ft = hn::Zero(d);
+  if (f.law.frictional) {
+    // h += v_t dt; f_t = −k_t h − c_t v_t; capped at μ f_n (0 where f_n <= 0), h then set so
+    // that spring and dashpot sit at the cap: h = −(f_t + c_t v_t) / k_t.
+    const auto kt = hn::Set(d, f.law.tangentialStiffness);
+    history = hn::Add(history, hn::Mul(vt, hn::Set(d, f.law.dt)));
+    ft = hn::Sub(hn::Mul(hn::Neg(kt), history), hn::Mul(dampT, vt));
+    const auto zero = hn::Zero(d);
+    const auto cap = hn::IfThenElse(hn::Gt(fn, zero), hn::Mul(hn::Set(d, f.law.friction), fn), zero);
+    const auto slides = hn::Gt(hn::Abs(ft), cap);
+    ft = hn::IfThenElse(slides, hn::CopySign(cap, ft), ft);
+    history = hn::IfThenElse(slides, hn::Div(hn::Neg(hn::Add(ft, hn::Mul(dampT, vt))), kt), history);
+  }
+  // F = f_n n + f_t t; τ_i = r_i × F, τ_j = r_j × F
+  const auto Fx = hn::Add(hn::Mul(fn, nx), hn::Mul(ft, tx)), Fy = hn::Add(hn::Mul(fn, ny), hn::Mul(ft, ty));
+  const auto ti = hn::Sub(hn::Mul(rix, Fy), hn::Mul(riy, Fx));
+  const auto tj = hn::Sub(hn::Mul(rjx, Fy), hn::Mul(rjy, Fx));
+  HWY_ALIGN double out[8 * kMax];
+  hn::Store(Fx, d, out);
+  hn::Store(Fy, d, out + lanes);
+  hn::Store(ti, d, out + 2 * lanes);
+  hn::Store(tj, d, out + 3 * lanes);
+  hn::Store(fn, d, out + 4 * lanes);
+  hn::Store(ft, d, out + 5 * lanes);
+  hn::Store(history, d, out + 6 * lanes);
+  hn::Store(overlap, d, out + 7 * lanes);
+  for (size_t l = 0; l < valid; ++l) {
+    const size_t s = at.slot + l;
+    const bool touches = (touchingBits[l / 8] >> (l % 8)) & 1;
+    f.touching[s] = touches;
+    if (!touches) continue;
+    f.fx[s] = out[l];
+    f.fy[s] = out[lanes + l];
+    f.torqueI[s] = out[2 * lanes + l];
+    f.torqueJ[s] = out[3 * lanes + l];
+    PairState& p = f.pairs[at.pair[l]];
+    p.fn = out[4 * lanes + l];
+    p.ft = out[5 * lanes + l];
+    if (f.law.frictional) p.history.tangential = out[6 * lanes + l];
+    p.overlap = out[7 * lanes + l];
+  }
+}
 
 // One vector of slots, of which the first `valid` are real: measurePolygons' operations, in
 // its order, lane by lane (the scalar expression each line follows is beside it).
+// With `forces` (not null) the law follows (lawVector) and the contacts are not written.
 template <class Tag>
-HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const Lanes& at, size_t valid) {
+HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const PolygonFaceForceInput* forces,
+                              const Lanes& at, size_t valid) {
   const hn::RebindToSigned<Tag> di;
   const auto zero = hn::Zero(d);
   const auto prx = hn::LoadU(d, at.refX), pry = hn::LoadU(d, at.refY);
@@ -79,6 +169,13 @@ HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const Lan
   // overlap = std::max(Da, Db) (weight q), std::max(Da, Db) being (Da < Db ? Db : Da)
   const auto overlap = hn::Mul(hn::IfThenElse(hn::Lt(Da, Db), Db, Da), hn::Mul(weight, q));
 
+  std::uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, touching, bits);
+  if (forces) {
+    lawVector(d, *forces, at, valid, gnx, gny, px, py, overlap, sign, prx, pry, hn::LoadU(d, at.incX),
+              hn::LoadU(d, at.incY), bits);
+    return;
+  }
   constexpr size_t kMax = HWY_MAX_BYTES / sizeof(double);
   const size_t lanes = hn::Lanes(d);
   HWY_ALIGN double out[5 * kMax];
@@ -87,8 +184,6 @@ HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const Lan
   hn::Store(px, d, out + 2 * lanes);
   hn::Store(py, d, out + 3 * lanes);
   hn::Store(overlap, d, out + 4 * lanes);
-  std::uint8_t bits[8] = {};
-  hn::StoreMaskBits(d, touching, bits);
   for (size_t l = 0; l < valid; ++l) {
     ContactGeometry& g = in.contacts[at.pair[l]];
     if (!((bits[l / 8] >> (l % 8)) & 1)) {
@@ -101,33 +196,48 @@ HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const Lan
   }
 }
 
-void MeasurePolygonFaces(const PolygonFaceKernelInput& in, int count) {
+// Slots [0, count), with the law where `forces` is not null.
+void MeasureSlots(const PolygonFaceKernelInput& in, const PolygonFaceForceInput* forces, int count) {
   const hn::ScalableTag<double> d;
   const size_t lanes = hn::Lanes(d), n = static_cast<size_t>(count);
   auto from = [&](size_t s) {
-    return Lanes{in.refX + s, in.refY + s, in.refC + s, in.refS + s, in.incX + s, in.incY + s, in.incC + s,
-                 in.incS + s, in.normalSign + s, in.face + s, in.edge + s, in.pair + s};
+    Lanes at{in.refX + s, in.refY + s, in.refC + s, in.refS + s, in.incX + s, in.incY + s, in.incC + s,
+             in.incS + s, in.normalSign + s, in.face + s, in.edge + s, in.pair + s};
+    if (forces) {
+      at.i = forces->i + s;
+      at.j = forces->j + s;
+    }
+    at.slot = s;
+    return at;
   };
   size_t s = 0;
-  for (; s + lanes <= n; s += lanes) measureVector(d, in, from(s), lanes);
+  for (; s + lanes <= n; s += lanes) measureVector(d, in, forces, from(s), lanes);
   if (s == n) return;
   // The last part-vector: its slots copied, the rest of the vector filled with its last slot
   // (measured and dropped), so no lane reads past the range (another thread's slots).
   constexpr size_t kMax = HWY_MAX_BYTES / sizeof(double);
   double buffer[9][kMax];
-  std::int64_t index[2][kMax];
+  std::int64_t index[4][kMax];
   std::int32_t pair[kMax];
   const double* sources[9] = {in.refX, in.refY, in.refC, in.refS, in.incX, in.incY, in.incC, in.incS, in.normalSign};
-  const std::int64_t* indexSources[2] = {in.face, in.edge};
+  const std::int64_t* indexSources[4] = {in.face, in.edge, forces ? forces->i : nullptr, forces ? forces->j : nullptr};
   for (size_t l = 0; l < lanes; ++l) {
     const size_t from = std::min(s + l, n - 1);
     for (int a = 0; a < 9; ++a) buffer[a][l] = sources[a][from];
-    for (int a = 0; a < 2; ++a) index[a][l] = indexSources[a][from];
+    for (int a = 0; a < 4; ++a) index[a][l] = indexSources[a] ? indexSources[a][from] : 0;
     pair[l] = in.pair[from];
   }
-  const Lanes tail{buffer[0], buffer[1], buffer[2], buffer[3], buffer[4], buffer[5], buffer[6], buffer[7],
-                   buffer[8], index[0], index[1], pair};
-  measureVector(d, in, tail, n - s);
+  Lanes tail{buffer[0], buffer[1], buffer[2], buffer[3], buffer[4], buffer[5], buffer[6], buffer[7],
+             buffer[8], index[0], index[1], pair};
+  tail.i = index[2];
+  tail.j = index[3];
+  tail.slot = s;
+  measureVector(d, in, forces, tail, n - s);
+}
+
+void MeasurePolygonFaces(const PolygonFaceKernelInput& in, int count) { MeasureSlots(in, nullptr, count); }
+void MeasurePolygonFaceForces(const PolygonFaceKernelInput& in, const PolygonFaceForceInput& forces, int count) {
+  MeasureSlots(in, &forces, count);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -137,9 +247,13 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace grainlab {
 HWY_EXPORT(MeasurePolygonFaces);
+HWY_EXPORT(MeasurePolygonFaceForces);
 
 void measurePolygonFaces(const PolygonFaceKernelInput& in, int count) {
   HWY_DYNAMIC_DISPATCH(MeasurePolygonFaces)(in, count);
+}
+void measurePolygonFaceForces(const PolygonFaceKernelInput& in, const PolygonFaceForceInput& forces, int count) {
+  HWY_DYNAMIC_DISPATCH(MeasurePolygonFaceForces)(in, forces, count);
 }
 
 }  // namespace grainlab
@@ -150,6 +264,9 @@ void measurePolygonFaces(const PolygonFaceKernelInput& in, int count) {
 namespace grainlab {
 void measurePolygonFaces(const PolygonFaceKernelInput&, int) {
   throw std::logic_error("measurePolygonFaces: this build has no wide path");
+}
+void measurePolygonFaceForces(const PolygonFaceKernelInput&, const PolygonFaceForceInput&, int) {
+  throw std::logic_error("measurePolygonFaceForces: this build has no wide path");
 }
 }  // namespace grainlab
 #endif

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "contact_geometry.hpp"
+#include "neighbor_list.hpp"
 
 namespace grainlab {
 
@@ -32,11 +33,39 @@ struct PolygonFaceKernelInput {
   ContactGeometry* contacts;
 };
 
+/// The force law at the slots' contacts (polygon_face_kernel.cpp, measurePolygonFaceForces):
+/// ContactSolver's linear spring-dashpot and Cundall-Strack friction (or none) for a pair of
+/// polygons, lane by lane in the scalar code's operations and order, so each lane has its bits.
+struct PolygonFaceLaw {
+  double normalStiffness = 0, tangentialStiffness = 0, friction = 0, dt = 0;
+  bool frictional = false;
+};
+struct PolygonFaceForceInput {
+  // Per slot: the pair's particles i and j (the contact's normal runs from i to j).
+  const std::int64_t* i;
+  const std::int64_t* j;
+  // Particles: velocity as x0 y0 x1 y1 …, spin.
+  const double* velocity;
+  const double* spin;
+  // The pairs, by the slots' pair index: dampN, dampT and the tangential spring are read; a
+  // touching pair's spring, fn, ft and overlap are written in place. An apart pair is left as
+  // it is (the caller clears it).
+  PairState* pairs;
+  PolygonFaceLaw law;
+  // Per slot: the force on j from i (−F on i), the torques about i's and j's centroids, and
+  // 1 where the pair touches (0 where the outputs mean nothing).
+  double *fx, *fy, *torqueI, *torqueJ;
+  std::uint8_t* touching;
+};
+
 /// Doubles in a record of the face table and of the edge table.
 inline constexpr int kFaceRecord = 5;
 inline constexpr int kEdgeRecord = 4;
 
 /// Measures slots [0, count).
 void measurePolygonFaces(const PolygonFaceKernelInput& in, int count);
+/// Measures slots [0, count) and applies the law at each (contacts are not written: the
+/// slots' forces are the answer).
+void measurePolygonFaceForces(const PolygonFaceKernelInput& in, const PolygonFaceForceInput& forces, int count);
 
 }  // namespace grainlab
