@@ -137,9 +137,9 @@ StressTensor Membrane::boundaryStress(std::span<const ContactRecord> contacts) c
   return s;
 }
 
-StressTensor Membrane::measureStress(std::vector<ContactRecord>& contacts) const {
-  world_.contacts(contacts);
-  return contactStress(contacts, world_.positions(), inside_, enclosedArea());
+StressTensor Membrane::measureStress() const {
+  // The servo measures every few steps: no records built, no wide state written back.
+  return world_.contactStress(inside_, enclosedArea());
 }
 
 }  // namespace grainlab

@@ -52,7 +52,7 @@ MembraneStage::MembraneStage(const StageSpec& spec, const OutputSpec& output, Wo
     : spec_(spec), world_(world), membrane_(membrane), startTime_(world.time()),
       sampleInterval_(output.sampleInterval > 0 ? output.sampleInterval : 0.005),
       measureEvery_(measureEvery(world)) {
-  stress_ = membrane_.measureStress(contacts_);
+  stress_ = membrane_.measureStress();
   dtControl_ = measureEvery_ * world_.timestep();
 }
 
@@ -74,7 +74,7 @@ void MembraneStage::afterStep() {
   membrane_.advance(world_.timestep());
   if (++stepsSinceMeasure_ >= measureEvery_) {
     stepsSinceMeasure_ = 0;
-    stress_ = membrane_.measureStress(contacts_);
+    stress_ = membrane_.measureStress();
     control();
   }
 }

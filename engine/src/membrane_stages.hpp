@@ -57,7 +57,6 @@ class MembraneStage : public Stage {
   int stepsSinceMeasure_ = 0;
   bool started_ = false;
   double meanDiameter_ = 0;  // m, of the specimen particles (equal-area discs); shearing only
-  std::vector<ContactRecord> contacts_;
 };
 
 /// Shrinks the ring equally on both axes, frictionless by default, until the void ratio

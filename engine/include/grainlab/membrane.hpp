@@ -76,9 +76,9 @@ class Membrane {
   /// inside[i] = 1 for specimen particles, 0 for the ring.
   const std::vector<unsigned char>& inside() const { return inside_; }
 
-  /// The contact stress of the specimen over the enclosed area; `contacts` is filled with
-  /// the world's current contacts.
-  StressTensor measureStress(std::vector<ContactRecord>& contacts) const;
+  /// The contact stress of the specimen over the enclosed area (contactStress over the
+  /// world's current contacts, summed by the solver from its own pair state: same bits).
+  StressTensor measureStress() const;
   /// The stress the ring applies, from the forces on its particles alone:
   /// σ_ab = −(1/A) Σ F_a (x − c)_b over the ring's contacts with the specimen, F the force on
   /// the specimen at contact point x. In equilibrium it equals the contact stress.
