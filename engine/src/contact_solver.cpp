@@ -262,6 +262,16 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
   const double* sinA = particles_.sinAngle.data();
   const int* shapeIndex = particles_.shapeIndex.data();
   PolygonFaceBatch& batch = polygonBatch_;
+  // A pair measured into its contact (by the scalar code or the batch's measure): its force, or apart.
+  auto forceFromContact = [&](int k) {
+    const ContactGeometry& g = batch.contact(k);
+    if (g.overlap <= 0) {
+      clearContact(pairs[k]);
+      apart(k);
+      return;
+    }
+    force(k, g);
+  };
   // In chunks, so that a chunk's shape records (fetched ahead by add()) and contacts are still
   // in cache when the kernel and the forces read them.
   constexpr int kChunk = 128;
@@ -309,26 +319,12 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
           force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
           continue;
         }
-        const ContactGeometry& g = batch.contact(k);
-        if (g.overlap <= 0) {
-          clearContact(pairs[k]);
-          apart(k);
-          continue;
-        }
-        force(k, g);
+        forceFromContact(k);
       }
       continue;
     }
     batch.measure(*polygonCollider_, first, slot - first);
-    for (int k = first; k < last; ++k) {
-      const ContactGeometry& g = batch.contact(k);
-      if (g.overlap <= 0) {
-        clearContact(pairs[k]);
-        apart(k);
-        continue;
-      }
-      force(k, g);
-    }
+    for (int k = first; k < last; ++k) forceFromContact(k);
   }
 }
 

@@ -78,10 +78,7 @@ class PolygonFaceBatch {
   void measure(const PolygonCollider& collider, int begin, int count) {
     if (count == 0) return;
     const auto s = static_cast<size_t>(begin);
-    const PolygonFaceKernelInput in{refX_.data() + s, refY_.data() + s, refC_.data() + s, refS_.data() + s,
-                                    incX_.data() + s, incY_.data() + s, incC_.data() + s, incS_.data() + s,
-                                    face_.data() + s, edge_.data() + s, normalSign_.data() + s, pair_.data() + s,
-                                    collider.faceTable(), collider.edgeTable(), contacts_.data()};
+    const PolygonFaceKernelInput in = kernelInput(collider, s);
     measurePolygonFaces(in, count);
   }
   /// Measures slots [begin, begin + count) and applies `law` at each (the pairs' state in
@@ -91,10 +88,7 @@ class PolygonFaceBatch {
                      const double* spin, PairState* pairs, int begin, int count) {
     if (count == 0) return;
     const auto s = static_cast<size_t>(begin);
-    const PolygonFaceKernelInput in{refX_.data() + s, refY_.data() + s, refC_.data() + s, refS_.data() + s,
-                                    incX_.data() + s, incY_.data() + s, incC_.data() + s, incS_.data() + s,
-                                    face_.data() + s, edge_.data() + s, normalSign_.data() + s, pair_.data() + s,
-                                    collider.faceTable(), collider.edgeTable(), contacts_.data()};
+    const PolygonFaceKernelInput in = kernelInput(collider, s);
     const PolygonFaceForceInput forces{i_.data() + s, j_.data() + s, velocity, spin, pairs, law,
                                        fx_.data() + s, fy_.data() + s, torqueI_.data() + s, torqueJ_.data() + s,
                                        touching_.data() + s};
@@ -109,6 +103,13 @@ class PolygonFaceBatch {
   double torqueJ(int slot) const { return torqueJ_[static_cast<size_t>(slot)]; }
 
  private:
+  /// The kernel's view of the slots from `s` on.
+  PolygonFaceKernelInput kernelInput(const PolygonCollider& collider, size_t s) {
+    return {refX_.data() + s, refY_.data() + s, refC_.data() + s, refS_.data() + s,
+            incX_.data() + s, incY_.data() + s, incC_.data() + s, incS_.data() + s,
+            face_.data() + s, edge_.data() + s, normalSign_.data() + s, pair_.data() + s,
+            collider.faceTable(), collider.edgeTable(), contacts_.data()};
+  }
   std::vector<ContactGeometry> contacts_;  // per pair
   std::vector<double> refX_, refY_, refC_, refS_, incX_, incY_, incC_, incS_, normalSign_;  // per slot
   std::vector<std::int64_t> face_, edge_;

@@ -17,30 +17,13 @@
 #include "grainlab/world.hpp"
 #include "polygon_collider.hpp"
 #include "polygon_face_batch.hpp"
+#include "wide_path_support.hpp"
 
 namespace grainlab {
 namespace {
 
 constexpr double kUnit = 0x1p-53;  // a double's unit roundoff
 
-bool hasWide() {
-  overrideSimdPath(SimdPath::Wide);
-  const bool built = simdPath() == SimdPath::Wide;
-  overrideSimdPath(std::nullopt);
-  return built;
-}
-
-Polygon ellipseHexagon(double longAxis) {  // as in the specimens
-  std::vector<Vec2> v;
-  const double a = 0.5 * longAxis, b = a / 1.5;
-  for (int k = 0; k < 6; ++k) v.emplace_back(a * std::cos(k * kPi / 3), b * std::sin(k * kPi / 3));
-  return makePolygon(v);
-}
-Polygon regular(int corners, double radius) {
-  std::vector<Vec2> v;
-  for (int k = 0; k < corners; ++k) v.emplace_back(radius * std::cos(2 * kPi * k / corners), radius * std::sin(2 * kPi * k / corners));
-  return makePolygon(v);
-}
 bool sameBits(const ContactGeometry& a, const ContactGeometry& b) {
   const double x[5] = {a.normal.x(), a.normal.y(), a.point.x(), a.point.y(), a.overlap};
   const double y[5] = {b.normal.x(), b.normal.y(), b.point.x(), b.point.y(), b.overlap};
@@ -54,10 +37,10 @@ bool sameBits(const ContactGeometry& a, const ContactGeometry& b) {
 // is zero: every lane must equal the scalar answer bit for bit. Two ranges of odd lengths (one
 // starting past slot 0) cover the part-vectors at their ends.
 TEST(PolygonFaceBatch, MeasuresWithMeasurePolygonsBits) {
-  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   PolygonCollider collider(1.0 / 0.0025);
-  const int shapes[] = {collider.add(ellipseHexagon(0.005)), collider.add(ellipseHexagon(0.0045)),
-                        collider.add(regular(3, 0.0025)), collider.add(regular(8, 0.002))};
+  const int shapes[] = {collider.add(test::ellipseHexagon(0.005)), collider.add(test::ellipseHexagon(0.0045)),
+                        collider.add(test::regularPolygon(3, 0.0025)), collider.add(test::regularPolygon(8, 0.002))};
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const int pairs = 2003, split = 997;
@@ -128,7 +111,7 @@ std::unique_ptr<World> makeWorld(const Scene& scene, int threads) {
 // The batch is laid out per range of pairs, and each range measures its own slots: 1, 2 and 3
 // threads must give the same bits.
 TEST(PolygonFaceBatch, SameBitsOnOneTwoAndThreeThreads) {
-  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   const Scene scene = pressedPolygonPile();
   overrideSimdPath(SimdPath::Wide);
   std::vector<std::vector<double>> states;

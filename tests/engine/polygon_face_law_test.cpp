@@ -14,28 +14,10 @@
 #include "grainlab/simd_path.hpp"
 #include "polygon_collider.hpp"
 #include "polygon_face_batch.hpp"
+#include "wide_path_support.hpp"
 
 namespace grainlab {
 namespace {
-
-bool hasWide() {
-  overrideSimdPath(SimdPath::Wide);
-  const bool built = simdPath() == SimdPath::Wide;
-  overrideSimdPath(std::nullopt);
-  return built;
-}
-
-Polygon ellipseHexagon(double longAxis) {  // as in the specimens
-  std::vector<Vec2> v;
-  const double a = 0.5 * longAxis, b = a / 1.5;
-  for (int k = 0; k < 6; ++k) v.emplace_back(a * std::cos(k * kPi / 3), b * std::sin(k * kPi / 3));
-  return makePolygon(v);
-}
-Polygon regular(int corners, double radius) {
-  std::vector<Vec2> v;
-  for (int k = 0; k < corners; ++k) v.emplace_back(radius * std::cos(2 * kPi * k / corners), radius * std::sin(2 * kPi * k / corners));
-  return makePolygon(v);
-}
 
 // ContactSolver::contactForce (engine/src/contact_solver.cpp) for a pair of polygons outside a
 // periodic cell, written out from the same building blocks: the scalar reference.
@@ -72,8 +54,8 @@ struct Outcome {
 // the part-vectors at their ends.
 Outcome compareLaws(bool frictional) {
   PolygonCollider collider(1.0 / 0.0025);
-  const int shapes[] = {collider.add(ellipseHexagon(0.005)), collider.add(ellipseHexagon(0.0045)),
-                        collider.add(regular(3, 0.0025)), collider.add(regular(8, 0.002))};
+  const int shapes[] = {collider.add(test::ellipseHexagon(0.005)), collider.add(test::ellipseHexagon(0.0045)),
+                        collider.add(test::regularPolygon(3, 0.0025)), collider.add(test::regularPolygon(8, 0.002))};
   std::mt19937_64 rng(frictional ? 17 : 19);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto signedUnit = [&] { return 2 * unit(rng) - 1; };
@@ -161,7 +143,7 @@ Outcome compareLaws(bool frictional) {
 }
 
 TEST(PolygonFaceLaw, FrictionalLanesHaveTheScalarLawsBits) {
-  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   const Outcome o = compareLaws(true);
   EXPECT_EQ(o.differing, 0) << "largest force difference " << o.worstForce << " N";
   // Touching and apart lanes, sticking and sliding ones are all exercised.
@@ -172,7 +154,7 @@ TEST(PolygonFaceLaw, FrictionalLanesHaveTheScalarLawsBits) {
 }
 
 TEST(PolygonFaceLaw, FrictionlessLanesHaveTheScalarLawsBits) {
-  if (!hasWide()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+  if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   const Outcome o = compareLaws(false);
   EXPECT_EQ(o.differing, 0) << "largest force difference " << o.worstForce << " N";
   EXPECT_GT(o.touching, o.pairs / 4);

@@ -12,6 +12,7 @@
 #include "grainlab/simd_path.hpp"
 #include "leapfrog.hpp"
 #include "neighbor_list.hpp"
+#include "wide_path_support.hpp"
 
 namespace grainlab {
 namespace {
@@ -19,10 +20,7 @@ namespace {
 class WideIntegration : public ::testing::Test {
  protected:
   void SetUp() override {
-    overrideSimdPath(SimdPath::Wide);
-    const bool built = simdPath() == SimdPath::Wide;
-    overrideSimdPath(std::nullopt);
-    if (!built) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+    if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   }
 };
 

@@ -17,6 +17,7 @@
 #include "grainlab/world.hpp"
 #include "disc_pair_kernel.hpp"
 #include "grainlab/simd_path.hpp"
+#include "wide_path_support.hpp"
 
 namespace grainlab {
 namespace {
@@ -96,10 +97,7 @@ Recorder runOn(SimdPath path, const Scene& scene) {
 class WidePath : public ::testing::Test {
  protected:
   void SetUp() override {
-    overrideSimdPath(SimdPath::Wide);
-    const bool built = simdPath() == SimdPath::Wide;
-    overrideSimdPath(std::nullopt);
-    if (!built) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
+    if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   }
 };
 
