@@ -43,7 +43,7 @@ class PolygonFaceBatch {
 
   /// Puts pair k, polygon a at pa against polygon b at pb with face features `c` (FaceA or
   /// FaceB), in `slot`, and fetches its shape records from `collider`'s tables ahead of measure().
-  void add(int slot, int k, const CachedContact& c, int a, const Pose& pa, int b, const Pose& pb,
+  [[gnu::always_inline]] void add(int slot, int k, const CachedContact& c, int a, const Pose& pa, int b, const Pose& pb,
            const PolygonCollider& collider) {
     const bool faceA = c.kind == CachedContact::Kind::FaceA;
     const Pose& r = faceA ? pa : pb;
