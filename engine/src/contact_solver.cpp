@@ -57,6 +57,7 @@ ContactSolver::ContactSolver(ParticleStore& particles, const Material& material,
 ContactSolver::~ContactSolver() = default;
 
 void ContactSolver::initialize() {
+  batchContactsCurrent_ = false;
   if (particles_.cell && !particles_.walls.empty()) {
     throw std::invalid_argument("a periodic cell has no walls: its particles meet each other's images instead");
   }
@@ -605,6 +606,7 @@ void ContactSolver::computeForces(double dt, bool moved) {
     else if (periodic) polygons ? pairForces<decltype(law), false, true>(law, dt) : pairForces<decltype(law), true, true>(law, dt);
     else polygons ? pairForces<decltype(law), false>(law, dt) : pairForces<decltype(law), true>(law, dt);
   }
+  batchContactsCurrent_ = widePolygons_;
   auto t2 = Clock::now();
   profile_.neighbors += seconds(t0, t1);
   profile_.forces += seconds(t1, t2);
@@ -670,6 +672,7 @@ void ContactSolver::checkOverlaps(std::int64_t step, double dt, double criticalD
 
 void ContactSolver::persist(StateArchive& a) {
   a.section("contacts");
+  if (a.loading()) batchContactsCurrent_ = false;
   writeBackWideState();
   neighbors_.persist(a, particles_.size(), static_cast<int>(particles_.walls.size()));
   if (particles_.cell) {

@@ -142,6 +142,10 @@ class ContactSolver {
   mutable bool wideStateAhead_ = false;
   // The wide path in a scene with polygons: face-against-edge pairs measured in batches.
   PolygonFaceBatch polygonBatch_;
+  // The batch holds every touching pair's contact as the last force pass measured it, at the
+  // particles' positions now (computeForces is a step's last move; a load or a new layout
+  // clears it): the servos' stress reads them instead of measuring again.
+  bool batchContactsCurrent_ = false;
   bool widePolygons_ = false;
   PolygonFaceLaw polygonLaw_;  // this step's law, for the batch
 };

@@ -1,8 +1,9 @@
 // The contact stress summed from the solver's own pair state: what a servo measures every few
 // steps. It is grainlab::contactStress over contacts(), term for term and in the same order,
 // so the bits are the same; it skips what that route pays for each measure: the wide path's
-// state written back to the list, a record per contact, and a nearest-image search call per
-// branch vector where the branch is plainly its own nearest image.
+// state written back to the list, a record per contact, a nearest-image search call per
+// branch vector where the branch is plainly its own nearest image, and, on the wide path with
+// polygons, the contacts' measure (the force pass kept it, with the same bits).
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -66,6 +67,8 @@ StressTensor ContactSolver::contactStress(std::span<const Vec2> centroids, std::
     ContactGeometry g;
     if (discsOnly && p.j >= 0) {
       g = collideDiscs(x[p.i], radius[p.i], particles_.cell ? Vec2(x[p.j] + shift) : x[p.j], radius[p.j]);
+    } else if (batchContactsCurrent_) {
+      g = polygonBatch_.contact(static_cast<int>(k));  // the force pass's measure, at these positions
     } else {
       CachedContact cache = k < polygonCache_.size() ? polygonCache_[k] : CachedContact{};
       g = pairGeometry(p, &cache, particles_.cell ? &shift : nullptr);

@@ -39,10 +39,11 @@ class PolygonFaceBatch {
   }
   /// Pair k's contact: measured (after measure()) or as the caller wrote it.
   ContactGeometry& contact(int k) { return contacts_[static_cast<size_t>(k)]; }
+  const ContactGeometry& contact(int k) const { return contacts_[static_cast<size_t>(k)]; }
 
   /// Puts pair k, polygon a at pa against polygon b at pb with face features `c` (FaceA or
   /// FaceB), in `slot`, and fetches its shape records from `collider`'s tables ahead of measure().
-  void add(int slot, int k, const CachedContact& c, int a, const Pose& pa, int b, const Pose& pb,
+  [[gnu::always_inline]] void add(int slot, int k, const CachedContact& c, int a, const Pose& pa, int b, const Pose& pb,
            const PolygonCollider& collider) {
     const bool faceA = c.kind == CachedContact::Kind::FaceA;
     const Pose& r = faceA ? pa : pb;
@@ -82,8 +83,8 @@ class PolygonFaceBatch {
     measurePolygonFaces(in, count);
   }
   /// Measures slots [begin, begin + count) and applies `law` at each (the pairs' state in
-  /// `pairs` read and written in place): the slot's force(), torques and touches() (the
-  /// pairs' contacts are not written).
+  /// `pairs` read and written in place): the slot's force(), torques and touches(), and the
+  /// touching pairs' contacts.
   void measureForces(const PolygonCollider& collider, const PolygonFaceLaw& law, const double* velocity,
                      const double* spin, PairState* pairs, int begin, int count) {
     if (count == 0) return;

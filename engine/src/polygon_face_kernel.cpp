@@ -29,10 +29,11 @@ struct Lanes {
 // The law at one vector of contacts: ContactSolver::contactForce and lawForce for a pair of
 // polygons, lane by lane, in their operations and order (the scalar expression each line
 // follows is beside it). n is the normal from i to j, p the contact point; the touching lanes'
-// state goes back to their pairs and every valid lane's outputs to its slot.
+// state and contact go back to their pairs and every valid lane's outputs to its slot.
 template <class Tag, class V>
-HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, const Lanes& at, size_t valid, V nx, V ny, V px,
-                          V py, V overlap, V faceA, V prx, V pry, V inx, V iny, const std::uint8_t* touchingBits) {
+HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, ContactGeometry* contacts, const Lanes& at,
+                          size_t valid, V nx, V ny, V px, V py, V overlap, V faceA, V prx, V pry, V inx, V iny,
+                          const std::uint8_t* touchingBits) {
   const hn::RebindToSigned<Tag> di;
   constexpr size_t kMax = HWY_MAX_BYTES / sizeof(double);
   const size_t lanes = hn::Lanes(d);
@@ -85,7 +86,7 @@ HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, const Lanes& at
   const auto Fx = hn::Add(hn::Mul(fn, nx), hn::Mul(ft, tx)), Fy = hn::Add(hn::Mul(fn, ny), hn::Mul(ft, ty));
   const auto ti = hn::Sub(hn::Mul(rix, Fy), hn::Mul(riy, Fx));
   const auto tj = hn::Sub(hn::Mul(rjx, Fy), hn::Mul(rjy, Fx));
-  HWY_ALIGN double out[8 * kMax];
+  HWY_ALIGN double out[12 * kMax];
   hn::Store(Fx, d, out);
   hn::Store(Fy, d, out + lanes);
   hn::Store(ti, d, out + 2 * lanes);
@@ -94,6 +95,10 @@ HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, const Lanes& at
   hn::Store(ft, d, out + 5 * lanes);
   hn::Store(history, d, out + 6 * lanes);
   hn::Store(overlap, d, out + 7 * lanes);
+  hn::Store(nx, d, out + 8 * lanes);
+  hn::Store(ny, d, out + 9 * lanes);
+  hn::Store(px, d, out + 10 * lanes);
+  hn::Store(py, d, out + 11 * lanes);
   for (size_t l = 0; l < valid; ++l) {
     const size_t s = at.slot + l;
     const bool touches = (touchingBits[l / 8] >> (l % 8)) & 1;
@@ -108,12 +113,16 @@ HWY_INLINE void lawVector(Tag d, const PolygonFaceForceInput& f, const Lanes& at
     p.ft = out[5 * lanes + l];
     if (f.law.frictional) p.history.tangential = out[6 * lanes + l];
     p.overlap = out[7 * lanes + l];
+    ContactGeometry& g = contacts[at.pair[l]];
+    g.normal = Vec2(out[8 * lanes + l], out[9 * lanes + l]);
+    g.point = Vec2(out[10 * lanes + l], out[11 * lanes + l]);
+    g.overlap = p.overlap;
   }
 }
 
 // One vector of slots, of which the first `valid` are real: measurePolygons' operations, in
 // its order, lane by lane (the scalar expression each line follows is beside it).
-// With `forces` (not null) the law follows (lawVector) and the contacts are not written.
+// With `forces` (not null) the law follows (lawVector), which writes the touching lanes' contacts.
 template <class Tag>
 HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const PolygonFaceForceInput* forces,
                               const Lanes& at, size_t valid) {
@@ -172,7 +181,7 @@ HWY_INLINE void measureVector(Tag d, const PolygonFaceKernelInput& in, const Pol
   std::uint8_t bits[8] = {};
   hn::StoreMaskBits(d, touching, bits);
   if (forces) {
-    lawVector(d, *forces, at, valid, gnx, gny, px, py, overlap, sign, prx, pry, hn::LoadU(d, at.incX),
+    lawVector(d, *forces, in.contacts, at, valid, gnx, gny, px, py, overlap, sign, prx, pry, hn::LoadU(d, at.incX),
               hn::LoadU(d, at.incY), bits);
     return;
   }

@@ -64,8 +64,9 @@ inline constexpr int kEdgeRecord = 4;
 
 /// Measures slots [0, count).
 void measurePolygonFaces(const PolygonFaceKernelInput& in, int count);
-/// Measures slots [0, count) and applies the law at each (contacts are not written: the
-/// slots' forces are the answer).
+/// Measures slots [0, count) and applies the law at each: the slots' forces are the answer, and
+/// each touching pair's contact is written too (an apart pair's is not), for the servos'
+/// stress, which would otherwise measure them again (contact_solver_stress.cpp).
 void measurePolygonFaceForces(const PolygonFaceKernelInput& in, const PolygonFaceForceInput& forces, int count);
 
 }  // namespace grainlab
