@@ -4,14 +4,20 @@
 
 #include "disc_leapfrog_kernel.hpp"
 #include "incremental_rotation.hpp"
+#include "polygon_leapfrog_kernel.hpp"
 
 namespace grainlab {
 
 void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool widePath) {
-  if (widePath && particles.polygons.empty() && particles.clumps.empty()) {  // discs only
-    leapfrogDiscsWide(particles, dt, begin, end);
+  if (widePath && particles.clumps.empty()) {
+    if (particles.polygons.empty()) leapfrogDiscsWide(particles, dt, begin, end);
+    else leapfrogPolygonsWide(particles, dt, begin, end);
     return;
   }
+  leapfrogAdvanceScalar(particles, dt, begin, end, widePath);
+}
+
+void leapfrogAdvanceScalar(ParticleStore& particles, double dt, int begin, int end, bool incrementalRotation) {
   // Local pointers: through the vectors, every store would make the compiler reload them.
   Vec2* __restrict x = particles.position.data();
   Vec2* __restrict v = particles.velocity.data();
@@ -30,7 +36,7 @@ void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bo
       angle[k] += turn;
       // Only polygons' and clumps' contacts depend on their orientation: a disc's rotation is kept in
       // its angle alone (sincos was a fifth of a disc pile's step).
-      if (widePath && particles.shape[k] == ShapeKind::Polygon) {
+      if (incrementalRotation && particles.shape[k] == ShapeKind::Polygon) {
         advanceRotation(particles.cosAngle[k], particles.sinAngle[k], turn, angle[k]);
       } else if (particles.shape[k] != ShapeKind::Disc) {
         ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);

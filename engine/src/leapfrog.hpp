@@ -8,8 +8,13 @@ namespace grainlab {
 /// force from the body force: one pass, so each particle's data is loaded once (three loops
 /// over the particles took a fifth of a disc pile's step). On the wide path (`widePath`) a
 /// polygon's cos and sin are advanced by its turn (incremental_rotation.hpp) instead of taken
-/// from its angle by sincos, and a discs-only scene is stepped several discs per instruction
-/// (disc_leapfrog_kernel.hpp: the same bits).
+/// from its angle by sincos, and a scene without clumps is stepped several particles per
+/// instruction (disc_leapfrog_kernel.hpp, polygon_leapfrog_kernel.hpp: the same bits as
+/// leapfrogAdvanceScalar()).
 void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool widePath = false);
+
+/// leapfrogAdvance() one particle at a time: the baseline path, and the wide path's scenes with
+/// clumps. `incrementalRotation` advances polygons' cos and sin as the wide path does.
+void leapfrogAdvanceScalar(ParticleStore& particles, double dt, int begin, int end, bool incrementalRotation);
 
 }  // namespace grainlab

@@ -1,9 +1,17 @@
-// What the wide-path tests share: whether this build has the wide path, and the polygons
-// the polygon kernels' tests measure.
+// What the wide-path tests share: whether this build has the wide path, each of its
+// instruction sets in turn, and the polygons the polygon kernels' tests measure.
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
+
+#ifdef GRAINLAB_TEST_EVERY_HWY_TARGET  // tests/CMakeLists.txt: tests that link Highway
+#include <hwy/targets.h>
+#endif
 
 #include "grainlab/math.hpp"
 #include "grainlab/shape.hpp"
@@ -17,6 +25,26 @@ inline bool wideSimdBuilt() {
   const bool built = simdPath() == SimdPath::Wide;
   overrideSimdPath(std::nullopt);
   return built;
+}
+
+/// Calls f(target name) on the wide path with every instruction set this build compiled that
+/// the CPU has (HWY_SCALAR to AVX-512: vectors of 1, 2, 4 and 8 doubles), each forced in turn,
+/// where the test links Highway; otherwise with the one dispatch picks. Leaves the choice as it was.
+template <class F>
+void onEveryWideTarget(const F& f) {
+  overrideSimdPath(SimdPath::Wide);
+#ifdef GRAINLAB_TEST_EVERY_HWY_TARGET
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    const std::string name = simdTargetName();
+    if (name != hwy::TargetName(target)) ADD_FAILURE() << "dispatch chose " << name << ", not the forced " << hwy::TargetName(target);
+    f(name);
+  }
+  hwy::SetSupportedTargetsForTest(0);
+#else
+  f(simdTargetName());
+#endif
+  overrideSimdPath(std::nullopt);
 }
 
 /// A hexagon inscribed in an ellipse of aspect ratio 1.5, as the specimens' particles are.
