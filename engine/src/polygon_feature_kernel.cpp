@@ -18,39 +18,36 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr size_t kSlots = kMaxPolygonVertices;
 
-void FaceSeparations(const PolygonFeatureTable& ref, const PolygonFeatureTable& other, int count, double dX, double dY,
-                     double c, double s, double* wx, double* wy, double* separation) {
+HWY_INLINE void Side(const FeatureSide& side) {
   const hn::CappedTag<double, kSlots> d;
   const size_t N = hn::Lanes(d);
-  const auto C = hn::Set(d, c), S = hn::Set(d, s);
+  const PolygonFeatureTable &ref = *side.ref, &other = *side.other;
+  const auto C = hn::Set(d, side.c), S = hn::Set(d, side.s);
   // x = dX + c u_x − s u_y; y = dY + s u_x + c u_y
   for (size_t i = 0; i < kSlots; i += N) {
     const auto ux = hn::LoadU(d, other.vx + i), uy = hn::LoadU(d, other.vy + i);
-    hn::StoreU(hn::Sub(hn::Add(hn::Set(d, dX), hn::Mul(C, ux)), hn::Mul(S, uy)), d, wx + i);
-    hn::StoreU(hn::Add(hn::Add(hn::Set(d, dY), hn::Mul(S, ux)), hn::Mul(C, uy)), d, wy + i);
+    hn::StoreU(hn::Sub(hn::Add(hn::Set(d, side.dX), hn::Mul(C, ux)), hn::Mul(S, uy)), d, side.wx + i);
+    hn::StoreU(hn::Add(hn::Add(hn::Set(d, side.dY), hn::Mul(S, ux)), hn::Mul(C, uy)), d, side.wy + i);
   }
   // least over v of n_x x_v + n_y y_v − offset, each face slot in a lane
   for (size_t i = 0; i < kSlots; i += N) {
     const auto nx = hn::LoadU(d, ref.nx + i), ny = hn::LoadU(d, ref.ny + i), offset = hn::LoadU(d, ref.offset + i);
     auto least = hn::Set(d, std::numeric_limits<double>::infinity());
-    for (int v = 0; v < count; ++v) {
-      const auto sep = hn::Sub(hn::Add(hn::Mul(nx, hn::Set(d, wx[v])), hn::Mul(ny, hn::Set(d, wy[v]))), offset);
-      least = hn::Min(least, sep);
+    for (int v = 0; v < side.count; ++v) {
+      const auto x = hn::Set(d, side.wx[v]), y = hn::Set(d, side.wy[v]);
+      least = hn::Min(least, hn::Sub(hn::Add(hn::Mul(nx, x), hn::Mul(ny, y)), offset));
     }
-    hn::StoreU(least, d, separation + i);
+    hn::StoreU(least, d, side.separation + i);
   }
 }
 
-void IncidentFacing(const PolygonFeatureTable& incident, double nx, double ny, double c, double s, double* facing) {
-  const hn::CappedTag<double, kSlots> d;
-  const size_t N = hn::Lanes(d);
-  const auto C = hn::Set(d, c), S = hn::Set(d, s), NX = hn::Set(d, nx), NY = hn::Set(d, ny);
-  // n_x (c m_x − s m_y) + n_y (s m_x + c m_y)
-  for (size_t i = 0; i < kSlots; i += N) {
-    const auto mx = hn::LoadU(d, incident.nx + i), my = hn::LoadU(d, incident.ny + i);
-    const auto tx = hn::Sub(hn::Mul(C, mx), hn::Mul(S, my)), ty = hn::Add(hn::Mul(S, mx), hn::Mul(C, my));
-    hn::StoreU(hn::Add(hn::Mul(NX, tx), hn::Mul(NY, ty)), d, facing + i);
+bool FeatureSides(const FeatureSide& first, int firstFaces, double reach, const FeatureSide& second) {
+  Side(first);
+  for (int e = 0; e < firstFaces; ++e) {
+    if (first.separation[e] > reach) return false;
   }
+  Side(second);
+  return true;
 }
 
 }  // namespace HWY_NAMESPACE
@@ -59,16 +56,10 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace grainlab {
-HWY_EXPORT(FaceSeparations);
-HWY_EXPORT(IncidentFacing);
+HWY_EXPORT(FeatureSides);
 
-void faceSeparationsWide(const PolygonFeatureTable& ref, const PolygonFeatureTable& other, int count, double dX,
-                         double dY, double c, double s, double* wx, double* wy, double* separation) {
-  HWY_DYNAMIC_DISPATCH(FaceSeparations)(ref, other, count, dX, dY, c, s, wx, wy, separation);
-}
-void incidentFacingWide(const PolygonFeatureTable& incident, double nx, double ny, double c, double s,
-                        double* facing) {
-  HWY_DYNAMIC_DISPATCH(IncidentFacing)(incident, nx, ny, c, s, facing);
+bool featureSidesWide(const FeatureSide& first, int firstFaces, double reach, const FeatureSide& second) {
+  return HWY_DYNAMIC_DISPATCH(FeatureSides)(first, firstFaces, reach, second);
 }
 
 }  // namespace grainlab
@@ -77,12 +68,8 @@ void incidentFacingWide(const PolygonFeatureTable& incident, double nx, double n
 #include <stdexcept>
 
 namespace grainlab {
-void faceSeparationsWide(const PolygonFeatureTable&, const PolygonFeatureTable&, int, double, double, double, double,
-                         double*, double*, double*) {
-  throw std::logic_error("faceSeparationsWide: this build has no wide path");
-}
-void incidentFacingWide(const PolygonFeatureTable&, double, double, double, double, double*) {
-  throw std::logic_error("incidentFacingWide: this build has no wide path");
+bool featureSidesWide(const FeatureSide&, int, double, const FeatureSide&) {
+  throw std::logic_error("featureSidesWide: this build has no wide path");
 }
 }  // namespace grainlab
 #endif

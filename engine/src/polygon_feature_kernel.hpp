@@ -7,14 +7,19 @@
 
 namespace grainlab {
 
-/// `other`'s vertex slots placed in `ref`'s frame, u ↦ (dX + c u_x − s u_y, dY + s u_x + c u_y),
-/// into wx, wy; and each of `ref`'s face slots' separation from the first `count` of them,
-/// the least of n·w − offset, into `separation` (arrays of kMaxPolygonVertices).
-void faceSeparationsWide(const PolygonFeatureTable& ref, const PolygonFeatureTable& other, int count, double dX,
-                         double dY, double c, double s, double* wx, double* wy, double* separation);
+/// One side of the separating-axis test: `other`'s vertex slots placed in `ref`'s frame,
+/// u ↦ (dX + c u_x − s u_y, dY + s u_x + c u_y), into wx, wy; and each of `ref`'s face slots'
+/// separation from the first `count` of them, the least of n·w − offset, into `separation`.
+struct FeatureSide {
+  const PolygonFeatureTable* ref;
+  const PolygonFeatureTable* other;
+  int count;
+  double dX, dY, c, s;
+  double *wx, *wy, *separation;  // kMaxPolygonVertices each
+};
 
-/// For every normal slot m_q of `incident`: n·(c m_x − s m_y, s m_x + c m_y), into `facing`.
-void incidentFacingWide(const PolygonFeatureTable& incident, double nx, double ny, double c, double s,
-                        double* facing);
+/// Side `first`, then side `second` unless one of the first's `firstFaces` faces separates by
+/// more than `reach` (the search then stops there); false in that case. One dispatch for both.
+bool featureSidesWide(const FeatureSide& first, int firstFaces, double reach, const FeatureSide& second);
 
 }  // namespace grainlab

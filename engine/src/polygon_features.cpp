@@ -50,16 +50,6 @@ void faceSeparations(const PolygonFeatureTable& ref, const double* wx, const dou
   }
 }
 
-// `other`'s vertex slots placed in ref's frame by f, and each of ref's face slots' separation
-// from the first `count` of them: on the wide path several slots per instruction, to the
-// same bits (polygon_feature_kernel.hpp).
-void sideSeparations(bool wide, const PolygonFeatureTable& ref, const PolygonFeatureTable& other, int count,
-                     const Frame& f, double* wx, double* wy, double* separation) {
-  if (wide) return faceSeparationsWide(ref, other, count, f.d.x(), f.d.y(), f.c, f.s, wx, wy, separation);
-  placeSlots(f, other, wx, wy);
-  faceSeparations(ref, wx, wy, count, separation);
-}
-
 // b2FindMaxSeparation over the faces' separations: the face that separates most, and by how
 // much (the first of equals, as Box2D takes it); `runnerUp` receives the next best face's.
 double maxSeparation(const double* separation, int count, int& face, double& runnerUp) {
@@ -131,14 +121,25 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   const double reach = 2 * tol.margin;  // both polygons' margins, as Box2D's totalRadius
   const Frame ba = relative(pa, pb), ab = relative(pb, pa);
   // Each polygon in the other's frame, and each face's separation of the other polygon.
-  const bool wide = simdPath() == SimdPath::Wide;
   alignas(64) double wbx[kSlots], wby[kSlots], wax[kSlots], way[kSlots], sepA[kSlots], sepB[kSlots];
-  sideSeparations(wide, ta, tb, B.count, ba, wbx, wby, sepA);
+  // The wide path takes both sides in one call, several faces per instruction, to the same
+  // bits (polygon_feature_kernel.hpp), stopping as the baseline does where A's faces separate.
+  const bool wide = simdPath() == SimdPath::Wide;
+  if (wide) {
+    featureSidesWide({&ta, &tb, B.count, ba.d.x(), ba.d.y(), ba.c, ba.s, wbx, wby, sepA}, A.count, reach,
+                     {&tb, &ta, A.count, ab.d.x(), ab.d.y(), ab.c, ab.s, wax, way, sepB});
+  } else {
+    placeSlots(ba, tb, wbx, wby);
+    faceSeparations(ta, wbx, wby, B.count, sepA);
+  }
   int faceA = 0, faceB = 0;
   double runnerUpA, runnerUpB;
   const double separationA = maxSeparation(sepA, A.count, faceA, runnerUpA);
   if (separationA > reach) return setApart(k, false, faceA, separationA, reach);
-  sideSeparations(wide, tb, ta, A.count, ab, wax, way, sepB);
+  if (!wide) {
+    placeSlots(ab, ta, wax, way);
+    faceSeparations(tb, wax, way, A.count, sepB);
+  }
   const double separationB = maxSeparation(sepB, B.count, faceB, runnerUpB);
   if (separationB > reach) return setApart(k, true, faceB, separationB, reach);
 
@@ -154,12 +155,8 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   // every slot, then the first of equals and the runner-up in order).
   const Vec2& n = R.normals[e];
   alignas(64) double facing[kSlots];
-  if (wide) {
-    incidentFacingWide(tI, n.x(), n.y(), f.c, f.s, facing);
-  } else {
-    for (int q = 0; q < kSlots; ++q) {
-      facing[q] = n.x() * (f.c * tI.nx[q] - f.s * tI.ny[q]) + n.y() * (f.s * tI.nx[q] + f.c * tI.ny[q]);
-    }
+  for (int q = 0; q < kSlots; ++q) {
+    facing[q] = n.x() * (f.c * tI.nx[q] - f.s * tI.ny[q]) + n.y() * (f.s * tI.nx[q] + f.c * tI.ny[q]);
   }
   int incident = 0;
   double least = std::numeric_limits<double>::infinity(), nextLeast = least;
