@@ -38,15 +38,21 @@ void placeSlots(const Frame& f, const PolygonFeatureTable& other, double* wx, do
   }
 }
 
-// Separation of the points w (in ref's frame) from each of ref's faces: the least signed
-// distance beyond the face's line, n·w − n·v_e, for every slot (faces past ref's count are
-// padding). Face-major across the slots so that the compiler can take several faces per
-// instruction; the least of a set does not depend on the order it is taken in.
-void faceSeparations(const PolygonFeatureTable& ref, const double* wx, const double* wy, int count, double* least) {
-  for (int e = 0; e < kSlots; ++e) least[e] = std::numeric_limits<double>::infinity();
-  for (int v = 0; v < count; ++v) {
-    const double x = wx[v], y = wy[v];
-    for (int e = 0; e < kSlots; ++e) least[e] = std::min(least[e], ref.nx[e] * x + ref.ny[e] * y - ref.offset[e]);
+// Separation of the points w (in ref's frame) from each of ref's first `faces` faces (rounded
+// up to even: the slot past an odd count is padding): the least signed distance beyond the
+// face's line, n·w − n·v_e. Two faces at a time, so that SSE2 takes them in one instruction;
+// the least of a set does not depend on the order it is taken in.
+void faceSeparations(const PolygonFeatureTable& ref, int faces, const double* wx, const double* wy, int count,
+                     double* least) {
+  for (int e = 0; e < faces; e += 2) {
+    double l0 = std::numeric_limits<double>::infinity(), l1 = l0;
+    for (int v = 0; v < count; ++v) {
+      const double x = wx[v], y = wy[v];
+      l0 = std::min(l0, ref.nx[e] * x + ref.ny[e] * y - ref.offset[e]);
+      l1 = std::min(l1, ref.nx[e + 1] * x + ref.ny[e + 1] * y - ref.offset[e + 1]);
+    }
+    least[e] = l0;
+    least[e + 1] = l1;
   }
 }
 
@@ -130,7 +136,7 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
                      {&tb, &ta, A.count, ab.d.x(), ab.d.y(), ab.c, ab.s, wax, way, sepB});
   } else {
     placeSlots(ba, tb, wbx, wby);
-    faceSeparations(ta, wbx, wby, B.count, sepA);
+    faceSeparations(ta, A.count, wbx, wby, B.count, sepA);
   }
   int faceA = 0, faceB = 0;
   double runnerUpA, runnerUpB;
@@ -138,7 +144,7 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   if (separationA > reach) return setApart(k, false, faceA, separationA, reach);
   if (!wide) {
     placeSlots(ab, ta, wax, way);
-    faceSeparations(tb, wax, way, A.count, sepB);
+    faceSeparations(tb, B.count, wax, way, A.count, sepB);
   }
   const double separationB = maxSeparation(sepB, B.count, faceB, runnerUpB);
   if (separationB > reach) return setApart(k, true, faceB, separationB, reach);
