@@ -4,9 +4,6 @@
 #include <cfloat>
 #include <limits>
 
-#include "grainlab/simd_path.hpp"
-#include "polygon_feature_kernel.hpp"
-
 namespace grainlab {
 namespace {
 
@@ -128,24 +125,14 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   const Frame ba = relative(pa, pb), ab = relative(pb, pa);
   // Each polygon in the other's frame, and each face's separation of the other polygon.
   alignas(64) double wbx[kSlots], wby[kSlots], wax[kSlots], way[kSlots], sepA[kSlots], sepB[kSlots];
-  // The wide path takes both sides in one call, several faces per instruction, to the same
-  // bits (polygon_feature_kernel.hpp), stopping as the baseline does where A's faces separate.
-  const bool wide = simdPath() == SimdPath::Wide;
-  if (wide) {
-    featureSidesWide({&ta, &tb, B.count, ba.d.x(), ba.d.y(), ba.c, ba.s, wbx, wby, sepA}, A.count, reach,
-                     {&tb, &ta, A.count, ab.d.x(), ab.d.y(), ab.c, ab.s, wax, way, sepB});
-  } else {
-    placeSlots(ba, tb, wbx, wby);
-    faceSeparations(ta, A.count, wbx, wby, B.count, sepA);
-  }
+  placeSlots(ba, tb, wbx, wby);
+  faceSeparations(ta, A.count, wbx, wby, B.count, sepA);
   int faceA = 0, faceB = 0;
   double runnerUpA, runnerUpB;
   const double separationA = maxSeparation(sepA, A.count, faceA, runnerUpA);
   if (separationA > reach) return setApart(k, false, faceA, separationA, reach);
-  if (!wide) {
-    placeSlots(ab, ta, wax, way);
-    faceSeparations(tb, B.count, wax, way, A.count, sepB);
-  }
+  placeSlots(ab, ta, wax, way);
+  faceSeparations(tb, B.count, wax, way, A.count, sepB);
   const double separationB = maxSeparation(sepB, B.count, faceB, runnerUpB);
   if (separationB > reach) return setApart(k, true, faceB, separationB, reach);
 
