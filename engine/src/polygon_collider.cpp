@@ -6,6 +6,7 @@ namespace grainlab {
 
 int PolygonCollider::add(const Polygon& poly) {
   polygons_.push_back(poly);
+  featureTables_.push_back(PolygonFeatureTable::of(poly));
   for (int e = 0; e < kMaxPolygonVertices; ++e) {
     FaceSpan span{0, 0, 0};
     if (e < poly.count) {
@@ -28,16 +29,18 @@ int PolygonCollider::add(const Polygon& poly) {
 void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const {
   const Polygon& A = polygon(a);
   const Polygon& B = polygon(b);
+  const PolygonFeatureTable& ta = featureTables_[static_cast<size_t>(a)];
+  const PolygonFeatureTable& tb = featureTables_[static_cast<size_t>(b)];
   if (k.kind == CachedContact::Kind::Apart) {
     // The face that separated the pair last time usually still does.
     const double reach = 2 * tolerances_.margin;
-    if (const double separation = separationAlongAxis(A, pa, B, pb, k); separation > reach) {
+    if (const double separation = separationAlongAxis(A, ta, pa, B, tb, pb, k); separation > reach) {
       k.slack = separation - reach;
       anchor(k, pa, A.circumradius, pb, B.circumradius);
       return;
     }
   }
-  findPolygonFeatures(A, pa, B, pb, tolerances_, k);
+  findPolygonFeatures(A, ta, pa, B, tb, pb, tolerances_, k);
   searches_.fetch_add(1, std::memory_order_relaxed);
   anchor(k, pa, A.circumradius, pb, B.circumradius);
 }

@@ -107,6 +107,7 @@ class PolygonCollider {
   double scale_;
   FeatureTolerances tolerances_;
   std::vector<Polygon> polygons_;
+  std::vector<PolygonFeatureTable> featureTables_;  // the feature search's view of each polygon
   std::vector<FaceSpan> spans_;  // kMaxPolygonVertices per polygon
   std::vector<double> faceTable_, edgeTable_;
   mutable std::atomic<long long> searches_{0};  // a statistic: counted, never read by the physics

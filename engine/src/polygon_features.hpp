@@ -63,6 +63,15 @@ inline double relativeMotion(const CachedContact& k, const Pose& pa, const Pose&
   return shift + (k.lever + shift) * turn;
 }
 
+/// A polygon's faces and vertices as the feature search reads them: structure of arrays,
+/// padded to kMaxPolygonVertices slots (zeros past `count`), with each face's offset n·v_e
+/// computed once (the expression the search used to evaluate per face per search, so its bits).
+struct alignas(64) PolygonFeatureTable {
+  double nx[kMaxPolygonVertices], ny[kMaxPolygonVertices], offset[kMaxPolygonVertices];
+  double vx[kMaxPolygonVertices], vy[kMaxPolygonVertices];
+  static PolygonFeatureTable of(const Polygon& p);
+};
+
 /// Features of polygon A against polygon B (normal from A to B). Fills every field of `k`
 /// except the poses (the caller anchors them), with a slack: how far the pair may move
 /// (relativeMotion) before a fresh search could answer otherwise. For a pair apart, that is
@@ -72,6 +81,11 @@ inline double relativeMotion(const CachedContact& k, const Pose& pa, const Pose&
 /// speculative margin, where Box2D's own tolerance takes over.
 void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                          const FeatureTolerances& tol, CachedContact& k);
+/// The same search with both polygons' tables at hand (PolygonCollider keeps them): the same
+/// answer, bit for bit, without building them.
+void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
+                         const PolygonFeatureTable& tb, const Pose& pb, const FeatureTolerances& tol,
+                         CachedContact& k);
 
 /// Features of polygon A against a disc of radius rb centred at xb.
 void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,
@@ -81,5 +95,8 @@ void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double r
 /// coherence: a pair that stays apart is re-checked with one face instead of all of both).
 double separationAlongAxis(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                            const CachedContact& k);
+/// The same, with the polygons' tables.
+double separationAlongAxis(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
+                           const PolygonFeatureTable& tb, const Pose& pb, const CachedContact& k);
 
 }  // namespace grainlab
