@@ -381,20 +381,21 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   const int pairCount = static_cast<int>(pairs.size());
   if (pool_) pool_->parallelFor(pairCount, [&](int begin, int end) { pairRange(std::true_type{}, begin, end); });
   else pairRange(std::false_type{}, 0, pairCount);
-  // The waiting shares, then each particle's local damping (in the same pass over the
-  // particles: both are the end of the particle's force).
+  // The waiting shares, then each particle's local damping (both are the end of a particle's
+  // force; the same range of particles, in cache, on the same thread).
   if (deferred_.empty() && material_.localDamping == 0) return;
   auto finish = [&](int begin, int end) {
-    for (int k = begin; k < end; ++k) {
-      const int first = slot ? deferredStart_[k] : 0, last = slot ? deferredStart_[k + 1] : 0;
-      for (int s = first; s < last; ++s) {
-        const DeferredForce& d = deferred[s];
-        if (!d.touching) continue;
-        f[k] += d.force;
-        tau[k] += d.torque;
+    if (slot) {
+      for (int k = begin; k < end; ++k) {
+        for (int s = deferredStart_[k]; s < deferredStart_[k + 1]; ++s) {
+          const DeferredForce& d = deferred[s];
+          if (!d.touching) continue;
+          f[k] += d.force;
+          tau[k] += d.torque;
+        }
       }
-      if (material_.localDamping > 0) applyLocalDamping(particles_, k, material_.localDamping);
     }
+    if (material_.localDamping > 0) applyLocalDamping(particles_, begin, end, material_.localDamping);
   };
   if (pool_) pool_->parallelFor(particles_.size(), finish);
   else finish(0, particles_.size());
@@ -467,7 +468,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   b.addDeferred(f, tau);
   if (material_.localDamping > 0) {
     auto damp = [&](int begin, int end) {
-      for (int k = begin; k < end; ++k) applyLocalDamping(particles_, k, material_.localDamping);
+      applyLocalDamping(particles_, begin, end, material_.localDamping);
     };
     if (pool_) pool_->parallelFor(particles_.size(), damp);
     else damp(0, particles_.size());
