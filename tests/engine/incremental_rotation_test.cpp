@@ -8,12 +8,14 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "grainlab/bench_scenes.hpp"
 #include "grainlab/simd_path.hpp"
 #include "grainlab/world.hpp"
 #include "incremental_rotation.hpp"
+#include "wide_path_support.hpp"
 
 namespace grainlab {
 namespace {
@@ -91,54 +93,58 @@ TEST(IncrementalRotation, ALargeTurnTakesSincosOfTheAngle) {
 // overlap by a ω dt, orders of magnitude above aΔ ≈ 1e-14 a. The wide step also measures the
 // polygons' face-against-edge contacts in batches (polygon_face_kernel.hpp), to the scalar
 // measurement's bits, so a broken term there fails this bound too (an end's depth without its
-// rise: a 2,203 N gap against the 6.85e-8 N bound).
+// rise: a 2,203 N gap against the 6.85e-8 N bound). On every instruction set this build
+// compiled, forced in turn.
 TEST(IncrementalRotation, APolygonPileGetsTheBaselinesForcesToRounding) {
   overrideSimdPath(SimdPath::Wide);
   const bool built = simdPath() == SimdPath::Wide;
   overrideSimdPath(std::nullopt);
   if (!built) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
-  Scene scene = pileScene(12, 12, true);
-  std::mt19937_64 rng(7);
-  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
-  for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
-  scene.gravity *= 50;
-  auto make = [&] {
-    auto w = std::make_unique<World>(scene.material, WorldSettings{});
-    for (const ParticleSpec& p : scene.particles) w->addParticle(p);
-    for (const Wall& wall : scene.walls) w->addWall(wall);
-    w->setGravity(scene.gravity);
-    return w;
-  };
-  const std::unique_ptr<World> baseline = make(), wide = make();
-  overrideSimdPath(SimdPath::Baseline);
-  for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other
+  test::onEveryWideTarget([&](const std::string& target) {
+    SCOPED_TRACE(target);
+    Scene scene = pileScene(12, 12, true);
+    std::mt19937_64 rng(7);
+    std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+    for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
+    scene.gravity *= 50;
+    auto make = [&] {
+      auto w = std::make_unique<World>(scene.material, WorldSettings{});
+      for (const ParticleSpec& p : scene.particles) w->addParticle(p);
+      for (const Wall& wall : scene.walls) w->addWall(wall);
+      w->setGravity(scene.gravity);
+      return w;
+    };
+    const std::unique_ptr<World> baseline = make(), wide = make();
+    overrideSimdPath(SimdPath::Baseline);
+    for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other
+      baseline->step();
+      wide->step();
+    }
     baseline->step();
+    overrideSimdPath(SimdPath::Wide);
     wide->step();
-  }
-  baseline->step();
-  overrideSimdPath(SimdPath::Wide);
-  wide->step();
-  overrideSimdPath(std::nullopt);
-  double largestAngle = 0, largestRadius = 0, forceGap = 0, torqueGap = 0;
-  for (int p = 0; p < baseline->size(); ++p) {
-    ASSERT_EQ(baseline->angles()[p], wide->angles()[p]);  // the angle itself is advanced alike
-    largestAngle = std::max(largestAngle, std::abs(baseline->angles()[p]));
-    forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
-    torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
-  }
-  for (const ParticleSpec& p : scene.particles) {
-    for (const Vec2& v : p.vertices) largestRadius = std::max(largestRadius, v.norm());
-  }
-  std::vector<ContactRecord> contacts;
-  baseline->contacts(contacts);
-  ASSERT_GT(contacts.size(), 100u) << "time " << baseline->time();  // the pile is in contact
-  const auto polygonPairs = std::count_if(contacts.begin(), contacts.end(), [](const ContactRecord& c) { return c.j >= 0; });
-  ASSERT_GT(polygonPairs, 100) << "the pile's polygons press on each other (not only on the walls)";
-  const double delta = kUnit * largestAngle + 18 * kUnit;
-  const double forceBound = 8 * 2 * scene.material.normalStiffness * 2 * largestRadius * delta;
-  EXPECT_LE(forceGap, forceBound);
-  EXPECT_LE(torqueGap, forceBound * largestRadius);
-  EXPECT_GT(forceGap, 0);  // the paths do differ: the wide step took the incremental rotation
+    overrideSimdPath(std::nullopt);
+    double largestAngle = 0, largestRadius = 0, forceGap = 0, torqueGap = 0;
+    for (int p = 0; p < baseline->size(); ++p) {
+      ASSERT_EQ(baseline->angles()[p], wide->angles()[p]);  // the angle itself is advanced alike
+      largestAngle = std::max(largestAngle, std::abs(baseline->angles()[p]));
+      forceGap = std::max(forceGap, (wide->forces()[p] - baseline->forces()[p]).norm());
+      torqueGap = std::max(torqueGap, std::abs(wide->torques()[p] - baseline->torques()[p]));
+    }
+    for (const ParticleSpec& p : scene.particles) {
+      for (const Vec2& v : p.vertices) largestRadius = std::max(largestRadius, v.norm());
+    }
+    std::vector<ContactRecord> contacts;
+    baseline->contacts(contacts);
+    ASSERT_GT(contacts.size(), 100u) << "time " << baseline->time();  // the pile is in contact
+    const auto polygonPairs = std::count_if(contacts.begin(), contacts.end(), [](const ContactRecord& c) { return c.j >= 0; });
+    ASSERT_GT(polygonPairs, 100) << "the pile's polygons press on each other (not only on the walls)";
+    const double delta = kUnit * largestAngle + 18 * kUnit;
+    const double forceBound = 8 * 2 * scene.material.normalStiffness * 2 * largestRadius * delta;
+    EXPECT_LE(forceGap, forceBound);
+    EXPECT_LE(torqueGap, forceBound * largestRadius);
+    EXPECT_GT(forceGap, 0);  // the paths do differ: the wide step took the incremental rotation
+  });
 }
 
 }  // namespace

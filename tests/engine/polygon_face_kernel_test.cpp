@@ -1,7 +1,8 @@
 // The wide path's polygon contacts (polygon_face_batch.hpp, polygon_face_kernel.hpp): the
 // face-against-edge pairs measured several per instruction must give measurePolygons' bits
 // lane by lane, and a polygon pile on the wide path the baseline's forces to rounding, the same
-// bits on any number of threads.
+// bits on any number of threads: each on every instruction set this build compiled, forced in
+// turn (vectors of 1 to 8 doubles).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "grainlab/bench_scenes.hpp"
@@ -38,50 +40,52 @@ bool sameBits(const ContactGeometry& a, const ContactGeometry& b) {
 // starting past slot 0) cover the part-vectors at their ends.
 TEST(PolygonFaceBatch, MeasuresWithMeasurePolygonsBits) {
   if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
-  PolygonCollider collider(1.0 / 0.0025);
-  const int shapes[] = {collider.add(test::ellipseHexagon(0.005)), collider.add(test::ellipseHexagon(0.0045)),
-                        collider.add(test::regularPolygon(3, 0.0025)), collider.add(test::regularPolygon(8, 0.002))};
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const int pairs = 2003, split = 997;
-  PolygonFaceBatch batch;
-  batch.resize(pairs);
-  std::vector<ContactGeometry> expected;
-  int slot = 0, touching = 0;
-  while (slot < pairs) {
-    const int a = shapes[rng() % 4], b = shapes[rng() % 4];
-    const double reach = collider.polygon(a).circumradius + collider.polygon(b).circumradius;
-    const double dir = 2 * kPi * unit(rng);
-    const Pose pa{Vec2(0.01 * unit(rng), 0.01 * unit(rng)), 0, 0};
-    const double angleA = 2 * kPi * unit(rng), angleB = 2 * kPi * unit(rng);
-    const Pose ra{pa.x, std::cos(angleA), std::sin(angleA)};
-    const Pose rb{ra.x + (0.4 + 0.6 * unit(rng)) * reach * Vec2(std::cos(dir), std::sin(dir)), std::cos(angleB), std::sin(angleB)};
-    CachedContact kept;
-    if (!collider.keepPolygonFeatures(a, ra, b, rb, kept)) continue;
-    // Moved by up to 15 % of the size and 0.3 rad: the kept features, measured where they are now.
-    const double turn = 0.3 * (2 * unit(rng) - 1);
-    const Pose moved{rb.x + 0.15 * reach * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1), std::cos(angleB + turn),
-                     std::sin(angleB + turn)};
-    CachedContact held = kept;
-    held.slack = std::numeric_limits<double>::infinity();  // measured as kept, not searched again
-    expected.push_back(collider.collidePolygons(a, ra, b, moved, &held));
-    touching += expected.back().overlap > 0;
-    batch.add(slot, slot, kept, a, ra, b, moved, collider);
-    ++slot;
-  }
-  batch.measure(collider, 0, split);
-  batch.measure(collider, split, pairs - split);
-  int differing = 0;
-  double worst = 0;
-  for (int k = 0; k < pairs; ++k) {
-    const ContactGeometry& got = batch.contact(k);
-    if (!sameBits(got, expected[static_cast<size_t>(k)])) ++differing;
-    worst = std::max(worst, std::abs(got.overlap - expected[static_cast<size_t>(k)].overlap));
-  }
-  EXPECT_EQ(differing, 0) << "largest overlap difference " << worst << " m";
-  // Both outcomes are exercised: touching lanes and lanes whose features no longer touch.
-  EXPECT_GT(touching, pairs / 4);
-  EXPECT_LT(touching, pairs - pairs / 10);
+  test::onEveryWideTarget([&](const std::string& target) {
+    PolygonCollider collider(1.0 / 0.0025);
+    const int shapes[] = {collider.add(test::ellipseHexagon(0.005)), collider.add(test::ellipseHexagon(0.0045)),
+                          collider.add(test::regularPolygon(3, 0.0025)), collider.add(test::regularPolygon(8, 0.002))};
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int pairs = 2003, split = 997;
+    PolygonFaceBatch batch;
+    batch.resize(pairs);
+    std::vector<ContactGeometry> expected;
+    int slot = 0, touching = 0;
+    while (slot < pairs) {
+      const int a = shapes[rng() % 4], b = shapes[rng() % 4];
+      const double reach = collider.polygon(a).circumradius + collider.polygon(b).circumradius;
+      const double dir = 2 * kPi * unit(rng);
+      const Pose pa{Vec2(0.01 * unit(rng), 0.01 * unit(rng)), 0, 0};
+      const double angleA = 2 * kPi * unit(rng), angleB = 2 * kPi * unit(rng);
+      const Pose ra{pa.x, std::cos(angleA), std::sin(angleA)};
+      const Pose rb{ra.x + (0.4 + 0.6 * unit(rng)) * reach * Vec2(std::cos(dir), std::sin(dir)), std::cos(angleB), std::sin(angleB)};
+      CachedContact kept;
+      if (!collider.keepPolygonFeatures(a, ra, b, rb, kept)) continue;
+      // Moved by up to 15 % of the size and 0.3 rad: the kept features, measured where they are now.
+      const double turn = 0.3 * (2 * unit(rng) - 1);
+      const Pose moved{rb.x + 0.15 * reach * Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 1), std::cos(angleB + turn),
+                       std::sin(angleB + turn)};
+      CachedContact held = kept;
+      held.slack = std::numeric_limits<double>::infinity();  // measured as kept, not searched again
+      expected.push_back(collider.collidePolygons(a, ra, b, moved, &held));
+      touching += expected.back().overlap > 0;
+      batch.add(slot, slot, kept, a, ra, b, moved, collider);
+      ++slot;
+    }
+    batch.measure(collider, 0, split);
+    batch.measure(collider, split, pairs - split);
+    int differing = 0;
+    double worst = 0;
+    for (int k = 0; k < pairs; ++k) {
+      const ContactGeometry& got = batch.contact(k);
+      if (!sameBits(got, expected[static_cast<size_t>(k)])) ++differing;
+      worst = std::max(worst, std::abs(got.overlap - expected[static_cast<size_t>(k)].overlap));
+    }
+    EXPECT_EQ(differing, 0) << target << ": largest overlap difference " << worst << " m";
+    // Both outcomes are exercised: touching lanes and lanes whose features no longer touch.
+    EXPECT_GT(touching, pairs / 4) << target;
+    EXPECT_LT(touching, pairs - pairs / 10) << target;
+  });
 }
 
 // A shuffled polygon pile pressed together under 50 g, in contact (as in the incremental
@@ -113,23 +117,23 @@ std::unique_ptr<World> makeWorld(const Scene& scene, int threads) {
 TEST(PolygonFaceBatch, SameBitsOnOneTwoAndThreeThreads) {
   if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   const Scene scene = pressedPolygonPile();
-  overrideSimdPath(SimdPath::Wide);
-  std::vector<std::vector<double>> states;
-  for (const int threads : {1, 2, 3}) {
-    const std::unique_ptr<World> w = makeWorld(scene, threads);
-    for (int k = 0; k < 1000; ++k) w->step();
-    std::vector<double> state;
-    for (int p = 0; p < w->size(); ++p) {
-      state.insert(state.end(), {w->positions()[p].x(), w->positions()[p].y(), w->angles()[p], w->forces()[p].x(),
-                                 w->forces()[p].y(), w->torques()[p]});
+  test::onEveryWideTarget([&](const std::string& target) {
+    std::vector<std::vector<double>> states;
+    for (const int threads : {1, 2, 3}) {
+      const std::unique_ptr<World> w = makeWorld(scene, threads);
+      for (int k = 0; k < 1000; ++k) w->step();
+      std::vector<double> state;
+      for (int p = 0; p < w->size(); ++p) {
+        state.insert(state.end(), {w->positions()[p].x(), w->positions()[p].y(), w->angles()[p], w->forces()[p].x(),
+                                   w->forces()[p].y(), w->torques()[p]});
+      }
+      states.push_back(state);
     }
-    states.push_back(state);
-  }
-  overrideSimdPath(std::nullopt);
-  for (size_t t = 1; t < states.size(); ++t) {
-    EXPECT_EQ(0, std::memcmp(states[0].data(), states[t].data(), states[0].size() * sizeof(double)))
-        << t + 1 << " threads";
-  }
+    for (size_t t = 1; t < states.size(); ++t) {
+      EXPECT_EQ(0, std::memcmp(states[0].data(), states[t].data(), states[0].size() * sizeof(double)))
+          << target << ", " << t + 1 << " threads";
+    }
+  });
 }
 
 }  // namespace

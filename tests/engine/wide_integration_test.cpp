@@ -81,35 +81,38 @@ TEST_F(WideIntegration, KickAndDriftGiveTheScalarLoopsBits) {
 }
 
 TEST_F(WideIntegration, SkinCheckAnswersAsTheScalarCheck) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const int n = 37;
-  const double skin = 0.001;
-  std::vector<Vec2> at(n);
-  std::vector<double> radii(n, 0.0004);
-  std::vector<Motion> motions(n, Motion::Dynamic);
-  const std::vector<Wall> walls;
-  for (int k = 0; k < n; ++k) at[static_cast<size_t>(k)] = Vec2(0.01 * k, 0.003 * u(rng));
-  NeighborList list;
-  ASSERT_TRUE(list.update(at, radii, motions, walls, skin, true));
-  // One disc moved by half the skin times 1 ± a few ulps, in a random direction: the checks
-  // must agree at the boundary, where a fused or reordered sum would answer otherwise.
-  int beyond = 0, within = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
-    std::vector<Vec2> moved = at;
-    const int k = static_cast<int>(rng() % n);
-    const double angle = 3.14159 * u(rng);
-    const double reach = 0.5 * skin * (1 + 4e-16 * u(rng));
-    moved[static_cast<size_t>(k)] += reach * Vec2(std::cos(angle), std::sin(angle));
-    for (const auto [begin, end] : {std::pair{0, n}, std::pair{k, k + 1}, std::pair{1, n - 1}}) {
-      const bool expected = list.outdated(moved, begin, end, false);
-      EXPECT_EQ(list.outdated(moved, begin, end, true), expected) << "disc " << k << " in [" << begin << ", " << end << ")";
-      if (begin == 0 && end == n) (expected ? beyond : within) += 1;
+  test::onEveryWideTarget([&](const std::string& target) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const int n = 37;
+    const double skin = 0.001;
+    std::vector<Vec2> at(n);
+    std::vector<double> radii(n, 0.0004);
+    std::vector<Motion> motions(n, Motion::Dynamic);
+    const std::vector<Wall> walls;
+    for (int k = 0; k < n; ++k) at[static_cast<size_t>(k)] = Vec2(0.01 * k, 0.003 * u(rng));
+    NeighborList list;
+    ASSERT_TRUE(list.update(at, radii, motions, walls, skin, true)) << target;
+    // One disc moved by half the skin times 1 ± a few ulps, in a random direction: the checks
+    // must agree at the boundary, where a fused or reordered sum would answer otherwise.
+    int beyond = 0, within = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+      std::vector<Vec2> moved = at;
+      const int k = static_cast<int>(rng() % n);
+      const double angle = 3.14159 * u(rng);
+      const double reach = 0.5 * skin * (1 + 4e-16 * u(rng));
+      moved[static_cast<size_t>(k)] += reach * Vec2(std::cos(angle), std::sin(angle));
+      for (const auto [begin, end] : {std::pair{0, n}, std::pair{k, k + 1}, std::pair{1, n - 1}}) {
+        const bool expected = list.outdated(moved, begin, end, false);
+        EXPECT_EQ(list.outdated(moved, begin, end, true), expected)
+            << target << ": disc " << k << " in [" << begin << ", " << end << ")";
+        if (begin == 0 && end == n) (expected ? beyond : within) += 1;
+      }
     }
-  }
-  // Both answers were tested.
-  EXPECT_GT(beyond, 100);
-  EXPECT_GT(within, 100);
+    // Both answers were tested.
+    EXPECT_GT(beyond, 100) << target;
+    EXPECT_GT(within, 100) << target;
+  });
 }
 
 }  // namespace

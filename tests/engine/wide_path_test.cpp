@@ -1,7 +1,8 @@
 // The wide contact path (disc pairs in batches, several per instruction) rounds differently
 // from the baseline (an estimated 1/|d| refined by Newton's method, fused products): it must
 // give the same bits on every run and with any number of threads, and the baseline's forces
-// to rounding level.
+// to rounding level: each on every instruction set this build compiled, forced in turn
+// (vectors of 1 to 8 doubles).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,80 +103,84 @@ class WidePath : public ::testing::Test {
 };
 
 TEST_F(WidePath, GivesTheSameBitsWithAnyThreadCount) {
-  enum class Law { Friction, Frictionless, Rolling, Clumps };
-  for (const Law law : {Law::Friction, Law::Frictionless, Law::Rolling, Law::Clumps}) {
-    Scene scene = law == Law::Rolling ? rollingPile() : law == Law::Clumps ? clumpPile() : pressedPile();
-    if (law == Law::Frictionless) scene.material.friction = 0;
-    else scene.material.localDamping = 0.3;
-    const Recorder serial = runOn(SimdPath::Wide, scene);
-    ASSERT_GT(serial.contacts, 100u);  // the pile is in contact at the end
-    EXPECT_EQ(serial.hash, runOn(SimdPath::Wide, scene).hash) << "a second serial run";
-    for (int threads : {2, 3}) {
-      scene.solver.threads = threads;
-      const Recorder threaded = runOn(SimdPath::Wide, scene);
-      EXPECT_EQ(serial.hash, threaded.hash) << threads << " threads (on " << discPairKernelTarget() << ")";
-      EXPECT_EQ(serial.rows, threaded.rows) << threads << " threads";
+  test::onEveryWideTarget([&](const std::string& target) {
+    enum class Law { Friction, Frictionless, Rolling, Clumps };
+    for (const Law law : {Law::Friction, Law::Frictionless, Law::Rolling, Law::Clumps}) {
+      Scene scene = law == Law::Rolling ? rollingPile() : law == Law::Clumps ? clumpPile() : pressedPile();
+      if (law == Law::Frictionless) scene.material.friction = 0;
+      else scene.material.localDamping = 0.3;
+      const Recorder serial = runOn(SimdPath::Wide, scene);
+      ASSERT_GT(serial.contacts, 100u) << target;  // the pile is in contact at the end
+      EXPECT_EQ(serial.hash, runOn(SimdPath::Wide, scene).hash) << target << ": a second serial run";
+      for (int threads : {2, 3}) {
+        scene.solver.threads = threads;
+        const Recorder threaded = runOn(SimdPath::Wide, scene);
+        EXPECT_EQ(serial.hash, threaded.hash) << target << ", " << threads << " threads (on " << discPairKernelTarget() << ")";
+        EXPECT_EQ(serial.rows, threaded.rows) << target << ", " << threads << " threads";
+      }
     }
-  }
+  });
 }
 
 // A disc five times the size of the twelve discs pressed onto it all round touches more of
 // them than a particle's fixed run of share records holds: the rest go to the overflow, which
 // must keep the order. Threaded runs use the records; one thread adds the shares at once.
 TEST_F(WidePath, ABigDiscsManyContactsGiveTheSameBitsWithAnyThreadCount) {
-  Scene scene = pressedPile();
-  const double r = scene.particles[0].radius, big = 5 * r;
-  const Vec2 centre(0.03, 0.03);
-  std::vector<ParticleSpec> ring;
-  for (int k = 0; k < 12; ++k) {
-    ParticleSpec p = scene.particles[0];
-    p.radius = r;
-    const double a = 2 * kPi * k / 12 + 0.1;
-    p.position = centre + (big + 0.9 * r) * Vec2(std::cos(a), std::sin(a));  // pressed by 0.1 r
-    ring.push_back(p);
-  }
-  ParticleSpec bigDisc = scene.particles[0];
-  bigDisc.position = centre;
-  bigDisc.radius = big;
-  ring.push_back(bigDisc);
-  scene.particles = ring;
-  scene.gravity = Vec2::Zero();
-  auto run = [&](int threads, int* bigContacts) {
-    overrideSimdPath(SimdPath::Wide);
-    WorldSettings settings;
-    settings.threads = threads;
-    World world(scene.material, settings);
-    for (const ParticleSpec& p : scene.particles) world.addParticle(p);
-    for (const Wall& wall : scene.walls) world.addWall(wall);
-    world.setGravity(scene.gravity);
-    const int b = world.size() - 1;
-    *bigContacts = 0;  // the most at once
-    std::vector<ContactRecord> contacts;
-    for (int k = 0; k < 200; ++k) {
-      world.step();
-      contacts.clear();
-      world.contacts(contacts);
-      *bigContacts = std::max(*bigContacts, static_cast<int>(std::count_if(contacts.begin(), contacts.end(),
-                                                                           [&](const ContactRecord& c) {
-                                                                             return c.i == b || c.j == b;
-                                                                           })));
+  test::onEveryWideTarget([&](const std::string& target) {
+    Scene scene = pressedPile();
+    const double r = scene.particles[0].radius, big = 5 * r;
+    const Vec2 centre(0.03, 0.03);
+    std::vector<ParticleSpec> ring;
+    for (int k = 0; k < 12; ++k) {
+      ParticleSpec p = scene.particles[0];
+      p.radius = r;
+      const double a = 2 * kPi * k / 12 + 0.1;
+      p.position = centre + (big + 0.9 * r) * Vec2(std::cos(a), std::sin(a));  // pressed by 0.1 r
+      ring.push_back(p);
     }
-    overrideSimdPath(std::nullopt);
-    std::uint64_t hash = 1469598103934665603ull;
-    for (const Vec2& x : world.positions()) {
-      for (int c = 0; c < 2; ++c) {
-        std::uint64_t bits;
-        std::memcpy(&bits, x.data() + c, sizeof bits);
-        hash = (hash ^ bits) * 1099511628211ull;
+    ParticleSpec bigDisc = scene.particles[0];
+    bigDisc.position = centre;
+    bigDisc.radius = big;
+    ring.push_back(bigDisc);
+    scene.particles = ring;
+    scene.gravity = Vec2::Zero();
+    auto run = [&](int threads, int* bigContacts) {
+      overrideSimdPath(SimdPath::Wide);
+      WorldSettings settings;
+      settings.threads = threads;
+      World world(scene.material, settings);
+      for (const ParticleSpec& p : scene.particles) world.addParticle(p);
+      for (const Wall& wall : scene.walls) world.addWall(wall);
+      world.setGravity(scene.gravity);
+      const int b = world.size() - 1;
+      *bigContacts = 0;  // the most at once
+      std::vector<ContactRecord> contacts;
+      for (int k = 0; k < 200; ++k) {
+        world.step();
+        contacts.clear();
+        world.contacts(contacts);
+        *bigContacts = std::max(*bigContacts, static_cast<int>(std::count_if(contacts.begin(), contacts.end(),
+                                                                             [&](const ContactRecord& c) {
+                                                                               return c.i == b || c.j == b;
+                                                                             })));
       }
-    }
-    return hash;
-  };
-  int bigContacts = 0, unused = 0;
-  const std::uint64_t serial = run(1, &bigContacts);
-  EXPECT_GT(bigContacts, 8) << "the big disc must touch more neighbours than a run of records holds";
-  EXPECT_EQ(serial, run(2, &unused)) << "2 threads";
-  EXPECT_EQ(serial, run(3, &unused)) << "3 threads";
+      overrideSimdPath(std::nullopt);
+      std::uint64_t hash = 1469598103934665603ull;
+      for (const Vec2& x : world.positions()) {
+        for (int c = 0; c < 2; ++c) {
+          std::uint64_t bits;
+          std::memcpy(&bits, x.data() + c, sizeof bits);
+          hash = (hash ^ bits) * 1099511628211ull;
+        }
+      }
+      return hash;
+    };
+    int bigContacts = 0, unused = 0;
+    const std::uint64_t serial = run(1, &bigContacts);
+    EXPECT_GT(bigContacts, 8) << target << ": the big disc must touch more neighbours than a run of records holds";
+    EXPECT_EQ(serial, run(2, &unused)) << target << ", 2 threads";
+    EXPECT_EQ(serial, run(3, &unused)) << target << ", 3 threads";
+  });
 }
 
 // Two worlds step `scene` in lockstep on the baseline (the same bits), then take one step
@@ -247,22 +252,24 @@ double energyBound(const ForceGaps& g, const Material& m, double forceBound) {
 // the state the step leaves (a relative rotation not reset to the cap overshoots it by ω_r dt,
 // storing about μ_r R* f_n ω_r dt more, far above the bound).
 TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
-  for (const bool rolling : {false, true}) {
-    for (int threads : {1, 2}) {
-      const Scene scene = rolling ? rollingPile() : pressedPile();
-      const ForceGaps g = oneWideStep(scene, threads, 2000);
-      double largestRadius = 0;
-      for (const ParticleSpec& p : scene.particles) largestRadius = std::max(largestRadius, p.radius);
-      const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * largestRadius;
-      const double torqueBound = (1 + scene.material.rollingFriction) * forceBound * largestRadius;
-      EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
-      EXPECT_GT(g.largestForce, 1e6 * forceBound) << "the pile is pressed: its forces are far above the bound";
-      EXPECT_GT(g.largestTorque, 1e3 * torqueBound) << "the pile's contacts turn its discs";
-      EXPECT_LE(g.force, forceBound) << threads << " threads" << (rolling ? ", rolling" : "");
-      EXPECT_LE(g.torque, torqueBound) << threads << " threads" << (rolling ? ", rolling" : "");
-      EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads" << (rolling ? ", rolling" : "");
+  test::onEveryWideTarget([&](const std::string& target) {
+    for (const bool rolling : {false, true}) {
+      for (int threads : {1, 2}) {
+        const Scene scene = rolling ? rollingPile() : pressedPile();
+        const ForceGaps g = oneWideStep(scene, threads, 2000);
+        double largestRadius = 0;
+        for (const ParticleSpec& p : scene.particles) largestRadius = std::max(largestRadius, p.radius);
+        const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * largestRadius;
+        const double torqueBound = (1 + scene.material.rollingFriction) * forceBound * largestRadius;
+        EXPECT_GT(g.force, 0) << target << ": the wide path was not taken: its rounding differs from the baseline's";
+        EXPECT_GT(g.largestForce, 1e6 * forceBound) << target << ": the pile is pressed: its forces are far above the bound";
+        EXPECT_GT(g.largestTorque, 1e3 * torqueBound) << target << ": the pile's contacts turn its discs";
+        EXPECT_LE(g.force, forceBound) << target << ", " << threads << " threads" << (rolling ? ", rolling" : "");
+        EXPECT_LE(g.torque, torqueBound) << target << ", " << threads << " threads" << (rolling ? ", rolling" : "");
+        EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << target << ", " << threads << " threads" << (rolling ? ", rolling" : "");
+      }
     }
-  }
+  });
 }
 
 // The clump pile, one step on each path after 1000 on the baseline: member pairs through the
@@ -273,24 +280,26 @@ TEST_F(WidePath, GivesTheBaselinesForcesToRounding) {
 // term missing or of the wrong sign would move a torque by ρ f, about 1e-3 r_m · k_n ρ against
 // 1e-14.
 TEST_F(WidePath, ClumpMemberPairsGiveTheBaselinesForcesToRounding) {
-  for (int threads : {1, 2}) {
-    const Scene scene = clumpPile();
-    const ForceGaps g = oneWideStep(scene, threads, 4000);
-    double memberRadius = 0, reach = 0;
-    for (const ParticleSpec& p : scene.particles) {
-      for (const ClumpMember& m : p.members) {
-        memberRadius = std::max(memberRadius, m.radius);
-        reach = std::max(reach, m.centre.norm() + m.radius);
+  test::onEveryWideTarget([&](const std::string& target) {
+    for (int threads : {1, 2}) {
+      const Scene scene = clumpPile();
+      const ForceGaps g = oneWideStep(scene, threads, 4000);
+      double memberRadius = 0, reach = 0;
+      for (const ParticleSpec& p : scene.particles) {
+        for (const ClumpMember& m : p.members) {
+          memberRadius = std::max(memberRadius, m.radius);
+          reach = std::max(reach, m.centre.norm() + m.radius);
+        }
       }
+      const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * memberRadius;
+      EXPECT_GT(g.force, 0) << target << ": the wide path was not taken: its rounding differs from the baseline's";
+      EXPECT_GT(g.largestForce, 1e6 * forceBound) << target << ": the pile is in contact: its forces are far above the bound";
+      EXPECT_GT(g.largestTorque, 1e6 * forceBound * reach) << target << ": the members' contacts turn their clumps";
+      EXPECT_LE(g.force, forceBound) << target << ", " << threads << " threads";
+      EXPECT_LE(g.torque, forceBound * reach) << target << ", " << threads << " threads";
+      EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << target << ", " << threads << " threads";
     }
-    const double forceBound = 64 * scene.material.normalStiffness * kEpsilon * 2 * memberRadius;
-    EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
-    EXPECT_GT(g.largestForce, 1e6 * forceBound) << "the pile is in contact: its forces are far above the bound";
-    EXPECT_GT(g.largestTorque, 1e6 * forceBound * reach) << "the members' contacts turn their clumps";
-    EXPECT_LE(g.force, forceBound) << threads << " threads";
-    EXPECT_LE(g.torque, forceBound * reach) << threads << " threads";
-    EXPECT_LE(g.energy, energyBound(g, scene.material, forceBound)) << threads << " threads";
-  }
+  });
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The wide contact path in a periodic cell: each slot meets j's image x_j + h n and adds the
 // image's affine velocity L (x_j + h n − x_i) to the relative velocity, as the baseline's
 // periodic loop does. It must give the baseline's forces to rounding, the same bits with any
-// number of threads, and the same bits after a resume.
+// number of threads, and the same bits after a resume: each on every instruction set this build
+// compiled, forced in turn (vectors of 1 to 8 doubles).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,11 +11,13 @@
 #include <cstring>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "grainlab/periodic_cell.hpp"
 #include "grainlab/simd_path.hpp"
 #include "grainlab/state_archive.hpp"
+#include "wide_path_support.hpp"
 #include "world_helpers.hpp"
 
 namespace grainlab {
@@ -182,70 +185,79 @@ double energyBound(const ForceGaps& g, const Material& m, double forceBound) {
 }
 
 TEST_F(WidePeriodic, GivesTheBaselinesForcesToRounding) {
-  for (const bool rolling : {false, true}) {
-    for (int threads : {1, 2}) {
-      SCOPED_TRACE(testing::Message() << threads << " threads" << (rolling ? ", rolling" : ""));
-      const CellPacking c = rolling ? rollingPacking(12, 0.2) : cellPacking(12, 0.2);
-      const ForceGaps g = oneWideStep(c, threads, 1500);
-      const double fBound = forceBound(c);
-      const double tBound = (1 + c.material.rollingFriction) * fBound * c.largestRadius;
-      std::printf("force gap %.3g N (bound %.3g, largest %.3g), torque gap %.3g N·m (bound %.3g), energy gap %.3g J "
-                  "(bound %.3g), %zu contacts of which %zu across an edge\n",
-                  g.force, fBound, g.largestForce, g.torque, tBound, g.energy, energyBound(g, c.material, fBound),
-                  g.contacts, g.acrossEdges);
-      EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
-      EXPECT_GT(g.acrossEdges, 10u) << "contacts must cross the cell's edges";
-      EXPECT_GT(g.largestForce, 1e6 * fBound) << "the packing is pressed: its forces are far above the bound";
-      EXPECT_GT(g.largestTorque, 1e3 * tBound) << "the contacts turn the discs";
-      EXPECT_LE(g.force, fBound);
-      EXPECT_LE(g.torque, tBound);
-      EXPECT_LE(g.energy, energyBound(g, c.material, fBound));
+  test::onEveryWideTarget([&](const std::string& target) {
+    SCOPED_TRACE(target);
+    for (const bool rolling : {false, true}) {
+      for (int threads : {1, 2}) {
+        SCOPED_TRACE(testing::Message() << threads << " threads" << (rolling ? ", rolling" : ""));
+        const CellPacking c = rolling ? rollingPacking(12, 0.2) : cellPacking(12, 0.2);
+        const ForceGaps g = oneWideStep(c, threads, 1500);
+        const double fBound = forceBound(c);
+        const double tBound = (1 + c.material.rollingFriction) * fBound * c.largestRadius;
+        std::printf("force gap %.3g N (bound %.3g, largest %.3g), torque gap %.3g N·m (bound %.3g), energy gap %.3g J "
+                    "(bound %.3g), %zu contacts of which %zu across an edge\n",
+                    g.force, fBound, g.largestForce, g.torque, tBound, g.energy, energyBound(g, c.material, fBound),
+                    g.contacts, g.acrossEdges);
+        EXPECT_GT(g.force, 0) << "the wide path was not taken: its rounding differs from the baseline's";
+        EXPECT_GT(g.acrossEdges, 10u) << "contacts must cross the cell's edges";
+        EXPECT_GT(g.largestForce, 1e6 * fBound) << "the packing is pressed: its forces are far above the bound";
+        EXPECT_GT(g.largestTorque, 1e3 * tBound) << "the contacts turn the discs";
+        EXPECT_LE(g.force, fBound);
+        EXPECT_LE(g.torque, tBound);
+        EXPECT_LE(g.energy, energyBound(g, c.material, fBound));
+      }
     }
-  }
+  });
 }
 
 // A run of 3000 steps: the list rebuilt as the cell shears, and the cell, tilted by 0.49 edge
 // at the start, remapped (LAMMPS's flip) on the way. Threads share particles (shuffled).
 TEST_F(WidePeriodic, GivesTheSameBitsWithAnyThreadCount) {
-  enum class Law { Friction, Frictionless, Rolling };
-  for (const Law law : {Law::Friction, Law::Frictionless, Law::Rolling}) {
-    CellPacking c = law == Law::Rolling ? rollingPacking(12, 0.49) : cellPacking(12, 0.49);
-    if (law == Law::Frictionless) c.material.friction = 0;
-    auto run = [&](int threads) {
-      const std::unique_ptr<World> w = makeWorld(c, threads);
-      for (int k = 0; k < 3000; ++k) w->step();
-      return std::make_pair(hashOf(*w), w->periodicCell()->edges()(0, 1) / w->periodicCell()->edges()(0, 0));
-    };
-    const auto [serial, tilt] = run(1);
-    EXPECT_LT(tilt, 0.45) << "the cell was not remapped";
-    EXPECT_EQ(serial, run(1).first) << "a second serial run";
-    EXPECT_EQ(serial, run(2).first) << "2 threads";
-    EXPECT_EQ(serial, run(3).first) << "3 threads";
-  }
+  test::onEveryWideTarget([&](const std::string& target) {
+    SCOPED_TRACE(target);
+    enum class Law { Friction, Frictionless, Rolling };
+    for (const Law law : {Law::Friction, Law::Frictionless, Law::Rolling}) {
+      CellPacking c = law == Law::Rolling ? rollingPacking(12, 0.49) : cellPacking(12, 0.49);
+      if (law == Law::Frictionless) c.material.friction = 0;
+      auto run = [&](int threads) {
+        const std::unique_ptr<World> w = makeWorld(c, threads);
+        for (int k = 0; k < 3000; ++k) w->step();
+        return std::make_pair(hashOf(*w), w->periodicCell()->edges()(0, 1) / w->periodicCell()->edges()(0, 0));
+      };
+      const auto [serial, tilt] = run(1);
+      EXPECT_LT(tilt, 0.45) << "the cell was not remapped";
+      EXPECT_EQ(serial, run(1).first) << "a second serial run";
+      EXPECT_EQ(serial, run(2).first) << "2 threads";
+      EXPECT_EQ(serial, run(3).first) << "3 threads";
+    }
+  });
 }
 
 // Saved mid-run (the wide path's pair state in its own arrays, handed back to the list),
 // loaded into a world built from the same packing, the run continues to the same bits.
 TEST_F(WidePeriodic, AResumedRunContinuesToTheSameBits) {
-  for (const bool rolling : {false, true}) {
-    for (int threads : {1, 2}) {
-      SCOPED_TRACE(testing::Message() << threads << " threads" << (rolling ? ", rolling" : ""));
-      const CellPacking c = rolling ? rollingPacking(12, 0.49) : cellPacking(12, 0.49);
-      const std::unique_ptr<World> straight = makeWorld(c, threads);
-      for (int k = 0; k < 1500; ++k) straight->step();
-      StateArchive saved;
-      straight->persist(saved);
-      for (int k = 0; k < 1500; ++k) straight->step();
-      std::vector<ContactRecord> contacts;
-      straight->contacts(contacts);
-      ASSERT_GT(contacts.size(), 200u) << "the packing must be in contact";
-      const std::unique_ptr<World> resumed = makeWorld(c, threads);
-      StateArchive load(saved.bytes());
-      resumed->persist(load);
-      for (int k = 0; k < 1500; ++k) resumed->step();
-      EXPECT_EQ(hashOf(*straight), hashOf(*resumed));
+  test::onEveryWideTarget([&](const std::string& target) {
+    SCOPED_TRACE(target);
+    for (const bool rolling : {false, true}) {
+      for (int threads : {1, 2}) {
+        SCOPED_TRACE(testing::Message() << threads << " threads" << (rolling ? ", rolling" : ""));
+        const CellPacking c = rolling ? rollingPacking(12, 0.49) : cellPacking(12, 0.49);
+        const std::unique_ptr<World> straight = makeWorld(c, threads);
+        for (int k = 0; k < 1500; ++k) straight->step();
+        StateArchive saved;
+        straight->persist(saved);
+        for (int k = 0; k < 1500; ++k) straight->step();
+        std::vector<ContactRecord> contacts;
+        straight->contacts(contacts);
+        ASSERT_GT(contacts.size(), 200u) << "the packing must be in contact";
+        const std::unique_ptr<World> resumed = makeWorld(c, threads);
+        StateArchive load(saved.bytes());
+        resumed->persist(load);
+        for (int k = 0; k < 1500; ++k) resumed->step();
+        EXPECT_EQ(hashOf(*straight), hashOf(*resumed));
+      }
     }
-  }
+  });
 }
 
 }  // namespace
