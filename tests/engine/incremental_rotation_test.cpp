@@ -107,14 +107,7 @@ TEST(IncrementalRotation, APolygonPileGetsTheBaselinesForcesToRounding) {
     std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
     for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
     scene.gravity *= 50;
-    auto make = [&] {
-      auto w = std::make_unique<World>(scene.material, WorldSettings{});
-      for (const ParticleSpec& p : scene.particles) w->addParticle(p);
-      for (const Wall& wall : scene.walls) w->addWall(wall);
-      w->setGravity(scene.gravity);
-      return w;
-    };
-    const std::unique_ptr<World> baseline = make(), wide = make();
+    const std::unique_ptr<World> baseline = test::worldOf(scene, {}), wide = test::worldOf(scene, {});
     overrideSimdPath(SimdPath::Baseline);
     for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other
       baseline->step();

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <string>
 #include <random>
 #include <utility>
@@ -28,11 +27,6 @@ class PolygonLeapfrogKernel : public ::testing::Test {
     if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   }
 };
-
-template <class T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
 
 // Discs and polygons mixed (one in three a disc) of every motion, under gravity whose y is
 // negative. Spins: none (w = 0 lanes, of both zeros' signs), a turn of exactly
@@ -75,14 +69,14 @@ ParticleStore mixedScene(unsigned seed) {
 }
 
 void expectSameBits(const ParticleStore& a, const ParticleStore& b, const std::string& what) {
-  EXPECT_TRUE(sameBits(a.position, b.position)) << what;
-  EXPECT_TRUE(sameBits(a.velocity, b.velocity)) << what;
-  EXPECT_TRUE(sameBits(a.force, b.force)) << what;
-  EXPECT_TRUE(sameBits(a.angle, b.angle)) << what;
-  EXPECT_TRUE(sameBits(a.spin, b.spin)) << what;
-  EXPECT_TRUE(sameBits(a.torque, b.torque)) << what;
-  EXPECT_TRUE(sameBits(a.cosAngle, b.cosAngle)) << what;
-  EXPECT_TRUE(sameBits(a.sinAngle, b.sinAngle)) << what;
+  EXPECT_TRUE(test::sameBits(a.position, b.position)) << what;
+  EXPECT_TRUE(test::sameBits(a.velocity, b.velocity)) << what;
+  EXPECT_TRUE(test::sameBits(a.force, b.force)) << what;
+  EXPECT_TRUE(test::sameBits(a.angle, b.angle)) << what;
+  EXPECT_TRUE(test::sameBits(a.spin, b.spin)) << what;
+  EXPECT_TRUE(test::sameBits(a.torque, b.torque)) << what;
+  EXPECT_TRUE(test::sameBits(a.cosAngle, b.cosAngle)) << what;
+  EXPECT_TRUE(test::sameBits(a.sinAngle, b.sinAngle)) << what;
 }
 
 TEST_F(PolygonLeapfrogKernel, GivesTheWideScalarLoopsBits) {

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,11 +23,6 @@ class WideIntegration : public ::testing::Test {
     if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   }
 };
-
-template <class T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
 
 // 37 discs (no whole number of vectors on any target) of every motion, some spinning and some
 // not, angles of both zeros' signs, forces of every sign, under gravity whose y is negative (a
@@ -64,12 +58,12 @@ TEST_F(WideIntegration, KickAndDriftGiveTheScalarLoopsBits) {
         leapfrogAdvance(scalar, dt, begin, end, false);
         leapfrogAdvance(wide, dt, begin, end, true);
       }
-      EXPECT_TRUE(sameBits(scalar.position, wide.position)) << target << " [" << begin << ", " << end << ")";
-      EXPECT_TRUE(sameBits(scalar.velocity, wide.velocity)) << target << " [" << begin << ", " << end << ")";
-      EXPECT_TRUE(sameBits(scalar.force, wide.force)) << target << " [" << begin << ", " << end << ")";
-      EXPECT_TRUE(sameBits(scalar.angle, wide.angle)) << target << " [" << begin << ", " << end << ")";
-      EXPECT_TRUE(sameBits(scalar.spin, wide.spin)) << target << " [" << begin << ", " << end << ")";
-      EXPECT_TRUE(sameBits(scalar.torque, wide.torque)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.position, wide.position)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.velocity, wide.velocity)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.force, wide.force)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.angle, wide.angle)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.spin, wide.spin)) << target << " [" << begin << ", " << end << ")";
+      EXPECT_TRUE(test::sameBits(scalar.torque, wide.torque)) << target << " [" << begin << ", " << end << ")";
     }
   });
   // The loop moved what it should: a fixed disc keeps its place, a dynamic one does not.
@@ -102,7 +96,7 @@ TEST_F(WideIntegration, SkinCheckAnswersAsTheScalarCheck) {
       const double angle = 3.14159 * u(rng);
       const double reach = 0.5 * skin * (1 + 4e-16 * u(rng));
       moved[static_cast<size_t>(k)] += reach * Vec2(std::cos(angle), std::sin(angle));
-      for (const auto [begin, end] : {std::pair{0, n}, std::pair{k, k + 1}, std::pair{1, n - 1}}) {
+      for (const auto& [begin, end] : {std::pair{0, n}, std::pair{k, k + 1}, std::pair{1, n - 1}}) {
         const bool expected = list.outdated(moved, begin, end, false);
         EXPECT_EQ(list.outdated(moved, begin, end, true), expected)
             << target << ": disc " << k << " in [" << begin << ", " << end << ")";

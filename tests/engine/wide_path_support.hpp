@@ -1,9 +1,12 @@
 // What the wide-path tests share: whether this build has the wide path, each of its
-// instruction sets in turn, and the polygons the polygon kernels' tests measure.
+// instruction sets in turn, a bitwise comparison, a world built from a scene, and the polygons
+// the polygon kernels' tests measure.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,8 +17,10 @@
 #endif
 
 #include "grainlab/math.hpp"
+#include "grainlab/scene.hpp"
 #include "grainlab/shape.hpp"
 #include "grainlab/simd_path.hpp"
+#include "grainlab/world.hpp"
 
 namespace grainlab::test {
 
@@ -45,6 +50,21 @@ void onEveryWideTarget(const F& f) {
   f(simdTargetName());
 #endif
   overrideSimdPath(std::nullopt);
+}
+
+/// True when the two arrays hold the same bits (not only equal values: −0 is not +0).
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+/// A world of the scene's particles and walls under its gravity (the tests build one per path).
+inline std::unique_ptr<World> worldOf(const Scene& scene, const WorldSettings& settings) {
+  auto w = std::make_unique<World>(scene.material, settings);
+  for (const ParticleSpec& p : scene.particles) w->addParticle(p);
+  for (const Wall& wall : scene.walls) w->addWall(wall);
+  w->setGravity(scene.gravity);
+  return w;
 }
 
 /// A hexagon inscribed in an ellipse of aspect ratio 1.5, as the specimens' particles are.

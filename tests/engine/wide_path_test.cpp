@@ -196,14 +196,7 @@ struct ForceGaps {
 ForceGaps oneWideStep(const Scene& scene, int threads, int steps) {
   WorldSettings settings;
   settings.threads = threads;
-  auto make = [&] {
-    auto w = std::make_unique<World>(scene.material, settings);
-    for (const ParticleSpec& p : scene.particles) w->addParticle(p);
-    for (const Wall& wall : scene.walls) w->addWall(wall);
-    w->setGravity(scene.gravity);
-    return w;
-  };
-  const std::unique_ptr<World> baseline = make(), wide = make();
+  const std::unique_ptr<World> baseline = test::worldOf(scene, settings), wide = test::worldOf(scene, settings);
   overrideSimdPath(SimdPath::Baseline);
   for (int k = 0; k < steps; ++k) {  // into contact, with sliding
     baseline->step();
