@@ -68,7 +68,7 @@ void DemSolver::computeForces(double dt) {
 // (neighbour list, narrow phase, force law) give the forces for the next.
 void DemSolver::step(double dt, std::int64_t) {
   auto t0 = Clock::now();
-  // The wide path advances polygons' rotations incrementally; the baseline takes sincos.
+  // The wide path advances polygons' and clumps' rotations incrementally; the baseline takes sincos.
   const bool incremental = simdPath() == SimdPath::Wide;
   if (particles_.cell) {
     // The periodic cell's step: its edges, then each particle, by the same map I + L dt.

@@ -1,7 +1,7 @@
 #pragma once
-// A polygon's cosine and sine advanced by its step's rotation δ = ω dt, instead of sincos of
-// its angle (the wide path; the baseline keeps sincos). sincos was a tenth of a settled
-// polygon pile's step; this is a dozen multiplications.
+// A polygon's or a clump's cosine and sine advanced by its step's rotation δ = ω dt, instead
+// of sincos of its angle (the wide path; the baseline keeps sincos). sincos was a tenth of a
+// settled polygon pile's step, and a sixth of a clump pile's; this is a dozen multiplications.
 //
 //  - cos δ and sin δ come from their Taylor series to δ⁶ and δ⁷. For |δ| ≤ kMaxIncrementalTurn
 //    = 1/64 the first term left out, δ⁸/8! ≤ 9e-20, is under a thousandth of a double's rounding

@@ -9,8 +9,8 @@
 namespace grainlab {
 
 void leapfrogAdvance(ParticleStore& particles, double dt, int begin, int end, bool widePath) {
-  if (widePath && particles.clumps.empty()) {
-    if (particles.polygons.empty()) leapfrogDiscsWide(particles, dt, begin, end);
+  if (widePath) {
+    if (particles.polygons.empty() && particles.clumps.empty()) leapfrogDiscsWide(particles, dt, begin, end);
     else leapfrogPolygonsWide(particles, dt, begin, end);
     return;
   }
@@ -36,7 +36,7 @@ void leapfrogAdvanceScalar(ParticleStore& particles, double dt, int begin, int e
       angle[k] += turn;
       // Only polygons' and clumps' contacts depend on their orientation: a disc's rotation is kept in
       // its angle alone (sincos was a fifth of a disc pile's step).
-      if (incrementalRotation && particles.shape[k] == ShapeKind::Polygon) {
+      if (incrementalRotation && particles.shape[k] != ShapeKind::Disc) {
         advanceRotation(particles.cosAngle[k], particles.sinAngle[k], turn, angle[k]);
       } else if (particles.shape[k] != ShapeKind::Disc) {
         ::sincos(angle[k], &particles.sinAngle[k], &particles.cosAngle[k]);

@@ -52,12 +52,12 @@ void LeapfrogPolygons(ParticleStore& p, double dt, int begin, int end) {
   const auto step = hn::Set(d, dt);
   const auto zero = hn::Zero(d);
   const auto maxTurn = hn::Set(d, kMaxIncrementalTurn);
-  const auto polygon = hn::Set(du, static_cast<std::uint64_t>(ShapeKind::Polygon));
+  const auto disc = hn::Set(du, static_cast<std::uint64_t>(ShapeKind::Disc));
   int k = KickDriftLanes(p, dt, begin, end, [&](int k, const auto& spin) HWY_ATTR {
-    // Spinning polygons turn; discs keep their cos and sin as they are (unused).
-    const auto isPolygon =
-        hn::RebindMask(d, hn::Eq(hn::PromoteTo(du, hn::PromoteTo(d32, hn::LoadU(d8, shape + k))), polygon));
-    const auto turning = hn::And(isPolygon, hn::Ne(spin, zero));
+    // Spinning polygons and clumps turn; discs keep their cos and sin as they are (unused).
+    const auto oriented =
+        hn::RebindMask(d, hn::Ne(hn::PromoteTo(du, hn::PromoteTo(d32, hn::LoadU(d8, shape + k))), disc));
+    const auto turning = hn::And(oriented, hn::Ne(spin, zero));
     if (hn::AllFalse(d, turning)) return;
     const auto turn = hn::Mul(spin, step);
     const auto small = hn::Le(hn::Abs(turn), maxTurn);  // false for a NaN turn, as in advanceRotation()
@@ -79,7 +79,7 @@ void LeapfrogPolygons(ParticleStore& p, double dt, int begin, int end) {
   });
   for (; k < end; ++k) {
     KickDriftOne(p, dt, k);
-    if (p.shape[k] == ShapeKind::Polygon && p.spin[k] != 0) {
+    if (p.shape[k] != ShapeKind::Disc && p.spin[k] != 0) {
       advanceRotation(cosAngle[k], sinAngle[k], p.spin[k] * dt, p.angle[k]);
     }
   }

@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/particle_store.hpp"
 #include "grainlab/simd_path.hpp"
 #include "grainlab/world.hpp"
 #include "incremental_rotation.hpp"
+#include "leapfrog.hpp"
 #include "wide_path_support.hpp"
 
 namespace grainlab {
@@ -138,6 +140,60 @@ TEST(IncrementalRotation, APolygonPileGetsTheBaselinesForcesToRounding) {
     EXPECT_LE(torqueGap, forceBound * largestRadius);
     EXPECT_GT(forceGap, 0);  // the paths do differ: the wide step took the incremental rotation
   });
+}
+
+// A clump's members are placed from its body's cos and sin, so the wide path turns a clump as
+// it turns a polygon: by the series where the step's turn is at most 1/64, by sincos of the
+// angle beyond; the baseline takes sincos of the angle every step. Each clump here starts a few
+// ulps off the unit circle, as after a long run, so that the series' result (renormalised)
+// differs in its bits from sincos of the new angle: a clump left to sincos on the wide path
+// fails the first expectation, a clump given the series on the baseline the second.
+TEST(IncrementalRotation, AClumpTurnsByTheSeriesOnTheWidePathAndBySincosOnTheBaseline) {
+  constexpr double kStep = 0x1p-18;
+  const double spins[] = {50.0, -3000.0, kMaxIncrementalTurn / kStep, 0.1 / kStep, -0.1 / kStep};
+  ParticleStore store;
+  Material material;
+  for (size_t k = 0; k < std::size(spins); ++k) {
+    ParticleSpec spec;
+    spec.shape = ShapeKind::Clump;
+    spec.members = {{Vec2(-0.001, 0), 0.0006}, {Vec2(0, 0), 0.0006}, {Vec2(0.001, 0), 0.0006}};
+    spec.position = Vec2(0.01 * static_cast<double>(k), 0);
+    spec.angle = 0.3 + static_cast<double>(k);
+    spec.spin = spins[k];
+    store.add(spec, material);
+    store.cosAngle[k] *= 1 + 0x1p-50;
+    store.sinAngle[k] *= 1 - 0x1p-50;
+  }
+  ASSERT_FALSE(store.clumps.empty());
+  ParticleStore wide = store, baseline = store;
+  const int n = static_cast<int>(store.size());
+  leapfrogAdvance(wide, kStep, 0, n, true);
+  leapfrogAdvance(baseline, kStep, 0, n, false);
+  int bySeries = 0;
+  for (int k = 0; k < n; ++k) {
+    SCOPED_TRACE("clump " + std::to_string(k) + ", spin " + std::to_string(spins[k]));
+    ASSERT_EQ(wide.angle[k], baseline.angle[k]);  // the angle is advanced alike
+    double s, c;
+    ::sincos(baseline.angle[k], &s, &c);
+    EXPECT_EQ(baseline.cosAngle[k], c);
+    EXPECT_EQ(baseline.sinAngle[k], s);
+    const double turn = wide.spin[k] * kStep;
+    if (std::abs(turn) <= kMaxIncrementalTurn) {
+      double cs = store.cosAngle[k], sn = store.sinAngle[k];
+      rotateIncrementally(cs, sn, turn);
+      EXPECT_EQ(wide.cosAngle[k], cs);
+      EXPECT_EQ(wide.sinAngle[k], sn);
+      EXPECT_TRUE(wide.cosAngle[k] != c || wide.sinAngle[k] != s) << "the start off the circle shows in the bits";
+      // and to rounding the same rotation: the start's 2^-50 off the circle and 16 u of the turn
+      EXPECT_NEAR(wide.cosAngle[k], c, 0x1p-49 + 16 * kUnit);
+      EXPECT_NEAR(wide.sinAngle[k], s, 0x1p-49 + 16 * kUnit);
+      ++bySeries;
+    } else {
+      EXPECT_EQ(wide.cosAngle[k], c);
+      EXPECT_EQ(wide.sinAngle[k], s);
+    }
+  }
+  EXPECT_EQ(bySeries, 3);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
-// The wide path's leapfrog for scenes of discs and polygons (polygon_leapfrog_kernel.hpp) gives
-// the bits of the wide path's scalar loop (leapfrogAdvanceScalar() with incremental rotation):
-// kick, drift, angle, and each polygon's cos and sin by the series or, for a large turn, by
-// sincos. The wide path's polygon runs keep their bits only if this holds exactly.
+// The wide path's leapfrog for scenes of discs with polygons or clumps (polygon_leapfrog_kernel.hpp)
+// gives the bits of the wide path's scalar loop (leapfrogAdvanceScalar() with incremental
+// rotation): kick, drift, angle, and each polygon's or clump's cos and sin by the series or, for
+// a large turn, by sincos. The wide path's polygon and clump runs keep their bits only if this
+// holds exactly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +29,7 @@ class PolygonLeapfrogKernel : public ::testing::Test {
   }
 };
 
-// Discs and polygons mixed (one in three a disc) of every motion, under gravity whose y is
+// Discs, polygons and clumps mixed (one in three a disc, one in six a clump) of every motion, under gravity whose y is
 // negative. Spins: none (w = 0 lanes, of both zeros' signs), a turn of exactly
 // kMaxIncrementalTurn (the series) and one a rounding above it (sincos), turns of a tenth of a
 // radian (sincos) and small random turns with torques (the series). Cos and sin start a few
@@ -44,6 +45,9 @@ ParticleStore mixedScene(unsigned seed) {
     ParticleSpec spec;
     if (k % 3 == 2) {
       spec.radius = 0.001 * (1.5 + u(rng));
+    } else if (k % 6 == 4) {  // a clump of three discs in a line
+      spec.shape = ShapeKind::Clump;
+      spec.members = {{Vec2(-0.001, 0), 0.0006}, {Vec2(0, 0), 0.0006}, {Vec2(0.001, 0), 0.0006}};
     } else {
       spec.shape = ShapeKind::Polygon;
       const Polygon& shape = k % 2 ? hexagon : square;
@@ -99,13 +103,14 @@ TEST_F(PolygonLeapfrogKernel, GivesTheWideScalarLoopsBits) {
   EXPECT_GE(targets, 1);
 }
 
-// The scene tests what it says: both of a polygon's rotations are taken, the series right at
-// its limit, and a spinning disc's cos and sin stay as they were, as do particles outside the range.
+// The scene tests what it says: both of a polygon's (and a clump's) rotations are taken, the
+// series right at its limit, and a spinning disc's cos and sin stay as they were, as do particles
+// outside the range.
 TEST_F(PolygonLeapfrogKernel, TheSceneTakesBothRotationsAndLeavesTheRestAlone) {
   const ParticleStore before = mixedScene(1);
   ParticleStore after = mixedScene(1);
   leapfrogAdvance(after, kStep, 3, 42, true);
-  int series = 0, sincos = 0, atTheLimit = 0, spinningDiscs = 0;
+  int series = 0, sincos = 0, atTheLimit = 0, spinningDiscs = 0, turningClumps = 0;
   for (int k = 3; k < 42; ++k) {
     const double turn = after.spin[k] * kStep;
     if (after.shape[k] == ShapeKind::Disc) {
@@ -114,6 +119,7 @@ TEST_F(PolygonLeapfrogKernel, TheSceneTakesBothRotationsAndLeavesTheRestAlone) {
       EXPECT_EQ(after.sinAngle[k], before.sinAngle[k]) << k;
     } else if (turn != 0) {
       EXPECT_NE(after.cosAngle[k], before.cosAngle[k]) << k;
+      turningClumps += after.shape[k] == ShapeKind::Clump;
       (std::abs(turn) <= kMaxIncrementalTurn ? series : sincos) += 1;
       atTheLimit += std::abs(turn) == kMaxIncrementalTurn;
       if (std::abs(turn) > kMaxIncrementalTurn) {  // sincos of the new angle, exactly
@@ -130,6 +136,7 @@ TEST_F(PolygonLeapfrogKernel, TheSceneTakesBothRotationsAndLeavesTheRestAlone) {
   EXPECT_GE(sincos, 4);
   EXPECT_GE(atTheLimit, 2);
   EXPECT_GE(spinningDiscs, 4);
+  EXPECT_GE(turningClumps, 3);
   for (const int k : {0, 1, 2, 42, 43, 44}) {
     EXPECT_EQ(after.position[k], before.position[k]) << k;
     EXPECT_EQ(after.cosAngle[k], before.cosAngle[k]) << k;
