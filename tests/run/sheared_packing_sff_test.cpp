@@ -134,10 +134,11 @@ TEST(ShearedPackingSff, ClosedFormStressAndEq7DirectionMatchTheContactStressWith
   EXPECT_LE(probe.worstSff, 1.0);
   EXPECT_LE(probe.worstEq7, 1.0);
   // Not vacuous: sheared well past the first samples, and a bound tighter than the dropped terms
-  // it has to tell apart (an error of a_c·a_n ~ 0.05 of T in the closed form would show).
+  // it has to tell apart (an error of a_c·a_n ~ 0.05 of T in the closed form would show): at
+  // most half of them.
   EXPECT_GT(probe.directed, 20);
   EXPECT_GT(probe.largestQ, 0.3);
-  EXPECT_LT(probe.largestBound, 0.01);
+  EXPECT_LT(probe.largestBound, 0.025);
 }
 
 }  // namespace

@@ -72,12 +72,17 @@ for q in ("peak_phi_mob_deg", "void_ratio_consolidated", "a_c_at_peak"):
         dof = (va + vb) ** 2 / (va ** 2 + vb ** 2)
         t = t975[max(1, math.floor(dof))]
         diff = sum(v) / 2 - sum(ring) / 2
-        scale = max(1.0, abs(diff))
-        assert abs(float(row["difference"]) - diff) < 1e-8 * scale, (row, diff)
+        # The tables print 10 significant digits, so each run's value here is off by up to
+        # 5e-10 of itself: a mean or the difference by up to 1e-9 of the largest value (big),
+        # the interval's half-width t √(va + vb) by up to t times that, besides the printed
+        # result's own 5e-10.
+        big = max(abs(x) for x in v + ring)
+        assert abs(float(row["difference"]) - diff) < 1e-9 * big + 5e-10 * abs(diff), (row, diff)
         assert abs(float(row["welch_t"]) - t) < 1e-3, (row, t)
         t = float(row["welch_t"])
-        assert abs(float(row["difference_ci_high"]) - (diff + t * math.sqrt(va + vb))) < 1e-8 * scale, row
-        assert abs(float(row["mean"]) - sum(v) / 2) < 1e-8 * scale, row
+        high = diff + t * math.sqrt(va + vb)
+        assert abs(float(row["difference_ci_high"]) - high) < 1e-9 * big * (1 + t) + 5e-10 * abs(high), (row, high)
+        assert abs(float(row["mean"]) - sum(v) / 2) < 1e-9 * big, row
 
 # Each run's peak, its strain and a_c there, from its own series.csv; the curves' means likewise.
 def shearing(run):
