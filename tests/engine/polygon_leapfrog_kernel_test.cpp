@@ -29,11 +29,12 @@ class PolygonLeapfrogKernel : public ::testing::Test {
   }
 };
 
-// Discs, polygons and clumps mixed (one in three a disc, one in six a clump) of every motion, under gravity whose y is
-// negative. Spins: none (w = 0 lanes, of both zeros' signs), a turn of exactly
-// kMaxIncrementalTurn (the series) and one a rounding above it (sincos), turns of a tenth of a
-// radian (sincos) and small random turns with torques (the series). Cos and sin start a few
-// ulps off the unit circle, as after a long run, so the renormalisation shows in their bits.
+// Discs, polygons and clumps mixed (one in three a disc, one in six a clump) of every motion,
+// under gravity whose y is negative. Spins: none (w = 0 lanes, of both zeros' signs), a turn of
+// exactly kMaxIncrementalTurn (the series) and one a rounding above it (sincos), turns of a
+// tenth of a radian (sincos) and small random turns with torques (the series). Cos and sin
+// start a few ulps off the unit circle, as after a long run, so the renormalisation shows in
+// their bits.
 ParticleStore mixedScene(unsigned seed) {
   ParticleStore store;
   store.gravity = Vec2(0.7, -9.81);
