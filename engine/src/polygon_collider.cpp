@@ -26,7 +26,8 @@ int PolygonCollider::add(const Polygon& poly) {
   return static_cast<int>(polygons_.size()) - 1;
 }
 
-void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const {
+void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k,
+                                      SlackGuards guards) const {
   const Polygon& A = polygon(a);
   const Polygon& B = polygon(b);
   const PolygonFeatureTable& ta = featureTables_[static_cast<size_t>(a)];
@@ -40,7 +41,7 @@ void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& 
       return;
     }
   }
-  findPolygonFeatures(A, ta, pa, B, tb, pb, tolerances_, k);
+  findPolygonFeatures(A, ta, pa, B, tb, pb, tolerances_, k, guards);
   searches_.fetch_add(1, std::memory_order_relaxed);
   anchor(k, pa, A.circumradius, pb, B.circumradius);
 }

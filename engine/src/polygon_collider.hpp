@@ -13,7 +13,8 @@
 // only once the pair has moved, relative to itself, more than a slack:
 //  - Touching or nearly touching pairs: features are found with a speculative margin (faces up
 //    to 2 × margin apart count) and kept for a relative motion up to the margin, so no contact
-//    can begin unseen.
+//    can begin unseen. The wide path, which measures kept features every step, keeps them
+//    until a face or edge choice could change, in reach or not (SlackGuards).
 //  - Pairs apart: kept while they move less than their separation beyond the margin; then
 //    the separating face found last time is tried first (a few dot products), and only if it
 //    no longer separates are all faces searched.
@@ -62,8 +63,10 @@ class PolygonCollider {
   /// The wide path (polygon_face_batch.hpp): keeps the pair's features or searches again, as
   /// collidePolygons does, without measuring them; true if they are a face against an edge,
   /// which the face kernel measures (to measurePolygons' bits). Otherwise they do not touch.
+  /// Its slack guards the feature choices only (SlackGuards): the face kernel measures the
+  /// kept features every step, and a pair gone out of reach measures no overlap.
   bool keepPolygonFeatures(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const {
-    if (!stillHolds(k, pa, pb)) refreshPolygons(a, pa, b, pb, k);
+    if (!stillHolds(k, pa, pb)) refreshPolygons(a, pa, b, pb, k, SlackGuards::FeatureChoices);
     return k.kind == CachedContact::Kind::FaceA || k.kind == CachedContact::Kind::FaceB;
   }
   /// The face kernel's shape tables (polygon_face_kernel.hpp), a record per corner
@@ -97,7 +100,8 @@ class PolygonCollider {
     k.sb = pb.s;
   }
   // Out of line: the rare path.
-  void refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k) const;
+  void refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k,
+                       SlackGuards guards = SlackGuards::EveryDecision) const;
   void refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k) const;
 
   // The kept features measured at the given poses.

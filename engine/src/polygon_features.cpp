@@ -120,7 +120,7 @@ void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, con
 
 void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
                          const PolygonFeatureTable& tb, const Pose& pb, const FeatureTolerances& tol,
-                         CachedContact& k) {
+                         CachedContact& k, SlackGuards guards) {
   const double reach = 2 * tol.margin;  // both polygons' margins, as Box2D's totalRadius
   const Frame ba = relative(pa, pb), ab = relative(pb, pa);
   // Each polygon in the other's frame, and each face's separation of the other polygon.
@@ -188,7 +188,8 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   const double lever = std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + A.circumradius + B.circumradius;
   const double bestFace = 0.5 * ((onB ? separationB - runnerUpB : separationA - runnerUpA));
   const double reference = 0.5 * std::abs(separationB - separationA - tol.referenceTolerance);
-  const double inReach = reach - std::max(separationA, separationB);
+  const double inReach = guards == SlackGuards::EveryDecision ? reach - std::max(separationA, separationB)
+                                                                   : std::numeric_limits<double>::infinity();
   const double incidentEdge = 0.5 * (nextLeast - least) * lever;
   k.slack = std::max(tol.margin, std::min({bestFace, reference, inReach, incidentEdge}));
 }

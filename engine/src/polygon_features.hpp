@@ -72,6 +72,13 @@ struct alignas(64) PolygonFeatureTable {
   static PolygonFeatureTable of(const Polygon& p);
 };
 
+/// Which decisions a contact's slack must guard. A fresh search also decides whether the pair
+/// is still within reach; kept features answer that themselves where they are measured every
+/// step, since a pair moved out of reach then measures no overlap, as a fresh search's "apart"
+/// gives none. So the wide path (PolygonCollider::keepPolygonFeatures) leaves the reach out of
+/// the slack and searches a touching pair again only when a face or edge choice could change.
+enum class SlackGuards { EveryDecision, FeatureChoices };
+
 /// Features of polygon A against polygon B (normal from A to B). Fills every field of `k`
 /// except the poses (the caller anchors them), with a slack: how far the pair may move
 /// (relativeMotion) before a fresh search could answer otherwise. For a pair apart, that is
@@ -85,7 +92,7 @@ void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, con
 /// answer, bit for bit, without building them.
 void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
                          const PolygonFeatureTable& tb, const Pose& pb, const FeatureTolerances& tol,
-                         CachedContact& k);
+                         CachedContact& k, SlackGuards guards = SlackGuards::EveryDecision);
 
 /// Features of polygon A against a disc of radius rb centred at xb.
 void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,

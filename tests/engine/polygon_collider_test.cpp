@@ -98,6 +98,50 @@ TEST(PolygonCollider, KeptFeaturesAgreeWithFreshOnesWithinTheSlack) {
   EXPECT_GE(identical, 0.98 * compared);
 }
 
+// The wide path keeps a touching pair's features until a face or edge choice could change
+// (SlackGuards::FeatureChoices), not until the pair could leave the speculative reach: the
+// kept features are measured every step, and a pair moved out of reach must measure no
+// contact, as a fresh search's "apart" gives none. Within that longer slack the kept answer
+// must still be a fresh one's, bit for bit, touching or not.
+TEST(PolygonCollider, FeaturesKeptForTheirChoicesAloneMeasureAsFreshOnes) {
+  Fixture f;
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int decided = 0, longer = 0, separated = 0, touching_ = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Pose pa = pose(Vec2(0.1, -0.05), 2 * kPi * unit(rng));
+    const double overlap = 1e-6 * (0.5 + 9.5 * unit(rng));
+    const Pose pb = touching(f, pa, 2 * kPi * unit(rng), 2 * kPi * unit(rng), overlap);
+    CachedContact everyDecision, kept;
+    f.collider.collidePolygons(f.a, pa, f.b, pb, &everyDecision);
+    ASSERT_TRUE(f.collider.keepPolygonFeatures(f.a, pa, f.b, pb, kept));
+    // The same features; a slack at least as long, longer where the reach decided it.
+    ASSERT_EQ(kept.kind, everyDecision.kind);
+    ASSERT_EQ(kept.reference, everyDecision.reference);
+    ASSERT_EQ(kept.incident, everyDecision.incident);
+    ASSERT_GE(kept.slack, everyDecision.slack);
+    if (kept.slack <= f.collider.tolerances().margin) continue;  // tied choices: the test above
+    ++decided;
+    longer += kept.slack > everyDecision.slack;
+    const Pose moved = movedWithin(kept, pa, pb, 0.99, rng);
+    const long long before = f.collider.featureSearches();
+    const bool faceEdge = f.collider.keepPolygonFeatures(f.a, pa, f.b, moved, kept);
+    EXPECT_EQ(f.collider.featureSearches(), before) << "within the slack, the features must not be searched again";
+    EXPECT_TRUE(faceEdge);
+    const ContactGeometry reused = f.collider.collidePolygons(f.a, pa, f.b, moved, &kept);
+    const ContactGeometry fresh = f.collider.collidePolygons(f.a, pa, f.b, moved);
+    EXPECT_EQ(reused.overlap, fresh.overlap) << "trial " << trial;
+    EXPECT_EQ(reused.point, fresh.point) << "trial " << trial;
+    EXPECT_EQ(reused.normal, fresh.normal) << "trial " << trial;
+    (fresh.overlap > 0 ? touching_ : separated) += 1;
+  }
+  // Most contacts' slack was set by the reach, and the longer one takes many pairs out of it.
+  EXPECT_GT(decided, 1000);
+  EXPECT_GT(longer, decided / 2);
+  EXPECT_GT(separated, 100);
+  EXPECT_GT(touching_, 100);
+}
+
 TEST(PolygonCollider, PairKeptApartCannotTouchWithinItsGap) {
   Fixture f;
   std::mt19937_64 rng(11);
