@@ -95,8 +95,10 @@ void ContactSolver::writeBackWideState() const {
 }
 
 // The contact between the two members of a pair, whatever their shapes. A pair involving a
-// polygon goes through its kept features (PolygonCollider), which `cache` keeps.
-ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* cache, const Vec2* shift) const {
+// polygon goes through its kept features (PolygonCollider), which `cache` keeps; `guards` says
+// which decisions a polygon-disc pair's slack guards (the wide path: the choices alone).
+ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* cache, const Vec2* shift,
+                                            SlackGuards guards) const {
   const int i = p.i, j = p.j;
   const auto& x = particles_.position;
   const auto& radius = particles_.boundingRadius;
@@ -119,8 +121,8 @@ ContactGeometry ContactSolver::pairGeometry(const PairState& p, CachedContact* c
   const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
   const int si = particles_.shapeIndex[i], sj = particles_.shapeIndex[j];
   if (!iDisc && !jDisc) return polygonCollider_->collidePolygons(si, pi, sj, pj, cache);
-  if (!iDisc) return polygonCollider_->collidePolygonDisc(si, pi, xj, radius[j], cache);
-  ContactGeometry g = polygonCollider_->collidePolygonDisc(sj, pj, x[i], radius[i], cache);
+  if (!iDisc) return polygonCollider_->collidePolygonDisc(si, pi, xj, radius[j], cache, guards);
+  ContactGeometry g = polygonCollider_->collidePolygonDisc(sj, pj, x[i], radius[i], cache, guards);
   g.normal = -g.normal;
   return g;
 }
@@ -286,7 +288,7 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
       Vec2 shift = Vec2::Zero();
       if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
       if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
-        batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr);
+        batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr, SlackGuards::FeatureChoices);
         continue;
       }
       const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];

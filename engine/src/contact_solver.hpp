@@ -66,7 +66,8 @@ class ContactSolver {
 
  private:
   // `shift`: in a periodic cell, where j's image is (x_j + shift); null otherwise.
-  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache, const Vec2* shift = nullptr) const;
+  ContactGeometry pairGeometry(const PairState& pair, CachedContact* cache, const Vec2* shift = nullptr,
+                               SlackGuards guards = SlackGuards::EveryDecision) const;
   // Periodic cell (contact_solver_periodic.cpp): pair k's image shift of j, m, and the affine
   // velocity of that image relative to i, L (x_j + shift − x_i).
   Vec2 imageShift(size_t k) const { return particles_.cell->shift(neighbors_.shifts()[k]); }

@@ -46,8 +46,9 @@ void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& 
   anchor(k, pa, A.circumradius, pb, B.circumradius);
 }
 
-void PolygonCollider::refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k) const {
-  findDiscFeatures(polygon(a), pa, xb, rb, tolerances_, k);
+void PolygonCollider::refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k,
+                                  SlackGuards guards) const {
+  findDiscFeatures(polygon(a), pa, xb, rb, tolerances_, k, guards);
   searches_.fetch_add(1, std::memory_order_relaxed);
   anchor(k, pa, polygon(a).circumradius, Pose{xb, 1.0, 0.0}, 0.0);
 }

@@ -51,12 +51,13 @@ class PolygonCollider {
     return measurePolygons(k, a, pa, b, pb);
   }
   /// Contact of polygon a with a disc of radius rb at xb; normal from the polygon to the disc.
-  ContactGeometry collidePolygonDisc(int a, const Pose& pa, const Vec2& xb, double rb,
-                                     CachedContact* cache = nullptr) const {
+  /// The wide path's features guard their choices only (SlackGuards), as its face pairs' do.
+  ContactGeometry collidePolygonDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact* cache = nullptr,
+                                     SlackGuards guards = SlackGuards::EveryDecision) const {
     CachedContact fresh;
     CachedContact& k = cache ? *cache : fresh;
     const Pose pb{xb, 1.0, 0.0};
-    if (!cache || !stillHolds(k, pa, pb)) refreshDisc(a, pa, xb, rb, k);
+    if (!cache || !stillHolds(k, pa, pb)) refreshDisc(a, pa, xb, rb, k, guards);
     return measureDisc(k, a, pa, xb, rb);
   }
 
@@ -102,7 +103,7 @@ class PolygonCollider {
   // Out of line: the rare path.
   void refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k,
                        SlackGuards guards = SlackGuards::EveryDecision) const;
-  void refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k) const;
+  void refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k, SlackGuards guards) const;
 
   // The kept features measured at the given poses.
   ContactGeometry measurePolygons(const CachedContact& k, int a, const Pose& pa, int b, const Pose& pb) const;

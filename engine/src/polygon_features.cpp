@@ -195,25 +195,39 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
 }
 
 void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,
-                      CachedContact& k) {
+                      CachedContact& k, SlackGuards guards) {
   const double reach = tol.margin + rb;
   const Vec2 dx = xb - pa.x;
   const Vec2 c(pa.c * dx.x() + pa.s * dx.y(), -pa.s * dx.x() + pa.c * dx.y());  // the centre in A's frame
   // b2CollidePolygonAndCircle: the face of greatest separation, or out at the first beyond reach.
   int face = 0;
-  double separation = -std::numeric_limits<double>::infinity();
+  double separation = -std::numeric_limits<double>::infinity(), runnerUp = separation;
   for (int e = 0; e < A.count; ++e) {
     const double s = A.normals[e].dot(c - A.vertices[e]);
     if (s > reach) return setApart(k, false, e, s, reach);
     if (s > separation) {
+      runnerUp = separation;
       separation = s;
       face = e;
+    } else if (s > runnerUp) {
+      runnerUp = s;
     }
   }
   k.slack = tol.margin;
   const Vec2& v1 = A.vertices[face];
   const int next = (face + 1) % A.count;
   const Vec2& v2 = A.vertices[next];
+  if (guards == SlackGuards::FeatureChoices) {
+    // The centre moves by at most the pair's motion in A's frame, and so does each of these
+    // decisions' value: the best face (against the runner-up: halved), inside or not, and
+    // which side of each end of the face. Whether the disc is within reach is left to the
+    // measure (a disc out of reach measures no overlap, as "apart" gives none).
+    const Vec2 along = v2 - v1;
+    const double length = along.norm();
+    const double beyondV1 = (c - v1).dot(along) / length, beyondV2 = (v2 - c).dot(along) / length;
+    k.slack = std::max(tol.margin, std::min({0.5 * (separation - runnerUp), std::abs(separation - tol.inside),
+                                             std::abs(beyondV1), std::abs(beyondV2)}));
+  }
   auto faceContact = [&] {
     k.kind = CachedContact::Kind::FaceA;
     k.reference = face;

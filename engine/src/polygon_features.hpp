@@ -95,8 +95,11 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
                          CachedContact& k, SlackGuards guards = SlackGuards::EveryDecision);
 
 /// Features of polygon A against a disc of radius rb centred at xb.
+/// Its slack: the speculative margin (every decision, the baseline), or with FeatureChoices the
+/// smallest margin of the best face, of inside or not, and of the face's two ends, at least
+/// the speculative margin.
 void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double rb, const FeatureTolerances& tol,
-                      CachedContact& k);
+                      CachedContact& k, SlackGuards guards = SlackGuards::EveryDecision);
 
 /// An Apart polygon pair's separation along its cached separating face now (temporal
 /// coherence: a pair that stays apart is re-checked with one face instead of all of both).

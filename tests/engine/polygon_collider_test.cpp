@@ -183,6 +183,75 @@ TEST(PolygonCollider, MovingBeyondTheSlackSearchesAgain) {
   EXPECT_EQ(g.point, fresh.point);
 }
 
+// The same for a disc against a polygon: the wide path's slack guards the best face, inside
+// or not and which side of each end of the face the centre is, and leaves the reach to the
+// measure. Within that slack the kept answer must be a fresh one's, bit for bit.
+TEST(PolygonCollider, DiscFeaturesKeptForTheirChoicesAloneMeasureAsFreshOnes) {
+  Fixture f;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int decided = 0, longer = 0, separated = 0, onFace = 0, onVertex = 0, inside = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Pose pa = pose(Vec2(-0.03, 0.02), 2 * kPi * unit(rng));
+    const double toward = 2 * kPi * unit(rng);
+    const Vec2 dir(std::cos(toward), std::sin(toward));
+    // Half the trials a disc just touching, as in a packing; half a larger one whose centre is
+    // anywhere within the polygon's reach, inside it too (the nearest face decides there).
+    const bool touchingDisc = trial % 2 == 0;
+    const double rb = touchingDisc ? 0.0008 : 0.003;
+    Vec2 xb;
+    if (touchingDisc) {
+      double lo = 0, hi = 0.01;  // centre distance: overlapping at lo, apart at hi
+      for (int it = 0; it < 80; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (f.collider.collidePolygonDisc(f.a, pa, pa.x + mid * dir, rb).overlap > 0 ? lo : hi) = mid;
+      }
+      xb = pa.x + (lo - 1e-6 * (0.5 + 9.5 * unit(rng))) * dir;
+    } else {
+      xb = pa.x + 0.003 * unit(rng) * dir;
+    }
+    CachedContact everyDecision, kept;
+    f.collider.collidePolygonDisc(f.a, pa, xb, rb, &everyDecision);
+    f.collider.collidePolygonDisc(f.a, pa, xb, rb, &kept, SlackGuards::FeatureChoices);
+    ASSERT_EQ(kept.kind, everyDecision.kind);
+    ASSERT_EQ(kept.reference, everyDecision.reference);
+    ASSERT_GE(kept.slack, everyDecision.slack);
+    if (kept.slack <= f.collider.tolerances().margin) continue;  // tied choices
+    ++decided;
+    longer += kept.slack > everyDecision.slack;
+    // The disc moved within 99 % of the slack (its motion is the centre's, plus A's turn times
+    // the lever), in a random direction: toward, along or away from the polygon.
+    const double share = unit(rng), angle = std::atan2(pa.s, pa.c), direction = 2 * kPi * unit(rng);
+    auto at = [&](double scale) {
+      return std::pair{Vec2(xb + scale * (1 - share) * kept.lever * Vec2(std::cos(direction), std::sin(direction))),
+                       pose(pa.x, angle + scale * share)};
+    };
+    double s0 = 0, s1 = 1;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (s0 + s1);
+      const auto [x, p] = at(mid);
+      (relativeMotion(kept, p, Pose{x, 1.0, 0.0}) < 0.99 * kept.slack ? s0 : s1) = mid;
+    }
+    const auto [xm, pm] = at(s0);
+    const long long before = f.collider.featureSearches();
+    const ContactGeometry reused = f.collider.collidePolygonDisc(f.a, pm, xm, rb, &kept, SlackGuards::FeatureChoices);
+    EXPECT_EQ(f.collider.featureSearches(), before) << "within the slack, the features must not be searched again";
+    const ContactGeometry fresh = f.collider.collidePolygonDisc(f.a, pm, xm, rb);
+    EXPECT_EQ(reused.overlap, fresh.overlap) << "trial " << trial;
+    EXPECT_EQ(reused.point, fresh.point) << "trial " << trial;
+    EXPECT_EQ(reused.normal, fresh.normal) << "trial " << trial;
+    if (fresh.overlap <= 0) ++separated;
+    else (kept.kind == CachedContact::Kind::VertexDisc ? onVertex : onFace) += 1;
+    inside += fresh.overlap > rb;  // the centre inside the polygon
+  }
+  EXPECT_GT(decided, 2000);
+  EXPECT_GT(longer, decided / 2);
+  EXPECT_GT(separated, 100);
+  EXPECT_GT(onFace, 100);
+  EXPECT_GT(onVertex, 20);
+  EXPECT_GT(inside, 100);
+}
+
 TEST(PolygonCollider, DiscAgainstFaceAndVertexMatchesTheGeometry) {
   Fixture f;
   const Pose pa = pose(Vec2(0, 0), 0.0);
