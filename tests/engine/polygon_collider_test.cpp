@@ -107,7 +107,7 @@ TEST(PolygonCollider, FeaturesKeptForTheirChoicesAloneMeasureAsFreshOnes) {
   Fixture f;
   std::mt19937_64 rng(19);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int decided = 0, longer = 0, separated = 0, touching_ = 0;
+  int decided = 0, longer = 0, separated = 0, stillTouching = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Pose pa = pose(Vec2(0.1, -0.05), 2 * kPi * unit(rng));
     const double overlap = 1e-6 * (0.5 + 9.5 * unit(rng));
@@ -133,13 +133,13 @@ TEST(PolygonCollider, FeaturesKeptForTheirChoicesAloneMeasureAsFreshOnes) {
     EXPECT_EQ(reused.overlap, fresh.overlap) << "trial " << trial;
     EXPECT_EQ(reused.point, fresh.point) << "trial " << trial;
     EXPECT_EQ(reused.normal, fresh.normal) << "trial " << trial;
-    (fresh.overlap > 0 ? touching_ : separated) += 1;
+    (fresh.overlap > 0 ? stillTouching : separated) += 1;
   }
   // Most contacts' slack was set by the reach, and the longer one takes many pairs out of it.
   EXPECT_GT(decided, 1000);
   EXPECT_GT(longer, decided / 2);
   EXPECT_GT(separated, 100);
-  EXPECT_GT(touching_, 100);
+  EXPECT_GT(stillTouching, 100);
 }
 
 TEST(PolygonCollider, PairKeptApartCannotTouchWithinItsGap) {
