@@ -85,7 +85,8 @@ enum class SlackGuards { EveryDecision, FeatureChoices };
 /// its separation beyond the margin. For a contact, it is the smallest of the margins by which
 /// each decision was taken (best face against the runner-up, A's face against B's, in reach
 /// or not, which edge is incident), halved where both sides of a decision move; at least the
-/// speculative margin, where Box2D's own tolerance takes over.
+/// speculative margin, where Box2D's own tolerance takes over. With FeatureChoices the reach
+/// is left out (SlackGuards).
 void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                          const FeatureTolerances& tol, CachedContact& k);
 /// The same search with both polygons' tables at hand (PolygonCollider keeps them): the same
