@@ -397,7 +397,7 @@ void ContactSolver::pairForces(const Law& law, double dt) {
         }
       }
     }
-    if (material_.localDamping > 0) applyLocalDamping(particles_, begin, end, material_.localDamping);
+    if (material_.localDamping > 0) applyLocalDamping(particles_, begin, end, material_.localDamping, widePolygons_);
   };
   if (pool_) pool_->parallelFor(particles_.size(), finish);
   else finish(0, particles_.size());
@@ -470,7 +470,7 @@ void ContactSolver::widePairForces(const Law& law, double dt) {
   b.addDeferred(f, tau);
   if (material_.localDamping > 0) {
     auto damp = [&](int begin, int end) {
-      applyLocalDamping(particles_, begin, end, material_.localDamping);
+      applyLocalDamping(particles_, begin, end, material_.localDamping, true);
     };
     if (pool_) pool_->parallelFor(particles_.size(), damp);
     else damp(0, particles_.size());

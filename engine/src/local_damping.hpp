@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "grainlab/particle_store.hpp"
+#include "local_damping_kernel.hpp"
 
 namespace grainlab {
 
@@ -14,7 +15,7 @@ namespace grainlab {
 /// and a branch per component, mispredicted half the time, made the damping a fourteenth of a
 /// polygon run's time. Each value still takes f − (α|f|)·sign(v), sign +1, −1 or 0, so the bits
 /// are those of the branching form.
-inline void applyLocalDamping(ParticleStore& particles, int begin, int end, double alpha) {
+inline void applyLocalDampingScalar(ParticleStore& particles, int begin, int end, double alpha) {
   auto sign = [](double v) { return static_cast<double>(static_cast<int>(v > 0) - static_cast<int>(v < 0)); };
   double* __restrict f = particles.force.data()->data();  // x y per particle
   const double* __restrict v = particles.velocity.data()->data();
@@ -31,6 +32,13 @@ inline void applyLocalDamping(ParticleStore& particles, int begin, int end, doub
     f[2 * k + 1] = dynamic ? dampedY : fy;
     tau[k] = dynamic ? dampedT : t;
   }
+}
+
+/// The damping on the run's path: on the wide one several particles per instruction
+/// (local_damping_kernel.hpp), to the same bits.
+inline void applyLocalDamping(ParticleStore& particles, int begin, int end, double alpha, bool widePath) {
+  if (widePath) applyLocalDampingWide(particles, begin, end, alpha);
+  else applyLocalDampingScalar(particles, begin, end, alpha);
 }
 
 }  // namespace grainlab

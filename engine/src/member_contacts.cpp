@@ -164,7 +164,7 @@ void MemberContactSolver::pairForces(const Law& law, double dt) {
     pairForce(p, c, law, dt);
   }
   if (material_.localDamping > 0) {
-    applyLocalDamping(particles_, 0, particles_.size(), material_.localDamping);
+    applyLocalDamping(particles_, 0, particles_.size(), material_.localDamping, false);
   }
 }
 
@@ -199,7 +199,7 @@ void MemberContactSolver::widePairForces(const Law& law, double dt) {
     pairForce(p, c, law, dt);
   }
   if (material_.localDamping > 0) {
-    applyLocalDamping(particles_, 0, particles_.size(), material_.localDamping);
+    applyLocalDamping(particles_, 0, particles_.size(), material_.localDamping, true);
   }
 }
 
