@@ -150,7 +150,8 @@ int main(int argc, char** argv) {
          << "variable floor equal " << number(floorY) << "\n"
          << "variable left equal " << number(leftX) << "\n"
          << "variable right equal " << number(rightX) << "\n"
-         << "variable skin equal " << number(0.3 * (std::accumulate(r.begin(), r.end(), 0.0) / n)) << "\n"
+         << "variable skin equal "
+         << number(grainlab::WorldSettings{}.skinFraction * (std::accumulate(r.begin(), r.end(), 0.0) / n)) << "\n"
          << "variable steps equal " << steps << "\n"
          << "variable expected_mass equal " << number(totalMass) << "\n";
 

@@ -72,7 +72,10 @@ void ContactSolver::initialize() {
   double meanRadius = 0;
   for (double r : particles_.boundingRadius) meanRadius += r;
   const int n = particles_.size();
-  skin_ = n ? skinFraction_ * meanRadius / n : 0.0;
+  // In a periodic cell a rebuild wraps the positions into the cell (a rounding): the skin sets
+  // when that happens, so it is part of a cell's results and stays the one they were made with.
+  constexpr double kCellSkinFraction = 0.3;
+  skin_ = n ? (particles_.cell ? kCellSkinFraction : skinFraction_) * meanRadius / n : 0.0;
   writeBackWideState();
   neighbors_.invalidate();
 }

@@ -232,7 +232,7 @@ ExportSummary exportLammps(const Scene& scene, const StartingSpecimen& s, const 
      << "newton          off\n"
      << "comm_modify     vel yes\n"
      << "read_data       specimen.data\n"
-     << "# grainlab's Verlet skin: 0.3 x the mean radius, rebuilt when needed.\n"
+     << "# Verlet skin: 0.3 x the mean radius (grainlab's in a periodic cell), rebuilt when needed.\n"
      << "neighbor        " << num(0.3 * meanRadius) << " bin\n"
      << "neigh_modify    delay 0 every 1 check yes\n"
      << "# kn kt gamman gammat xmu dampflag: grainlab's k_n, k_t, damping for the mean pair, mu.\n"
