@@ -18,6 +18,7 @@
 #include "incremental_rotation.hpp"
 #include "leapfrog.hpp"
 #include "wide_path_support.hpp"
+#include "world_helpers.hpp"
 
 namespace grainlab {
 namespace {
@@ -104,11 +105,7 @@ TEST(IncrementalRotation, APolygonPileGetsTheBaselinesForcesToRounding) {
   if (!built) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   test::onEveryWideTarget([&](const std::string& target) {
     SCOPED_TRACE(target);
-    Scene scene = pileScene(12, 12, true);
-    std::mt19937_64 rng(7);
-    std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
-    for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
-    scene.gravity *= 50;
+    const Scene scene = test::pressedPile(12, 12, true, 7);
     const std::unique_ptr<World> baseline = test::worldOf(scene, {}), wide = test::worldOf(scene, {});
     overrideSimdPath(SimdPath::Baseline);
     for (int k = 0; k < 8000; ++k) {  // onto the floor and into each other

@@ -20,6 +20,7 @@
 #include "polygon_collider.hpp"
 #include "polygon_face_batch.hpp"
 #include "wide_path_support.hpp"
+#include "world_helpers.hpp"
 
 namespace grainlab {
 namespace {
@@ -88,16 +89,9 @@ TEST(PolygonFaceBatch, MeasuresWithMeasurePolygonsBits) {
   });
 }
 
-// A shuffled polygon pile pressed together under 50 g, in contact (as in the incremental
-// rotation test).
-Scene pressedPolygonPile() {
-  Scene scene = pileScene(12, 12, true);
-  std::mt19937_64 rng(7);
-  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
-  for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
-  scene.gravity *= 50;
-  return scene;
-}
+// A shuffled polygon pile pressed together under 50 g, in contact (test::pressedPile, as the
+// incremental rotation test builds it).
+Scene pressedPolygonPile() { return test::pressedPile(12, 12, true, 7); }
 std::unique_ptr<World> makeWorld(const Scene& scene, int threads) {
   WorldSettings settings;
   settings.threads = threads;

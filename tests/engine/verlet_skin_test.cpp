@@ -7,7 +7,6 @@
 // velocity, force, angle, spin and torque must keep its bits while the rebuilds differ.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <random>
@@ -38,21 +37,12 @@ void expectSameState(const World& a, const World& b, const std::string& what) {
   EXPECT_TRUE(sameBits(a.torques(), b.torques())) << what;
 }
 
-Scene pressedPile(bool polygons) {
-  Scene scene = pileScene(10, 10, polygons);
-  std::mt19937_64 rng(11);
-  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
-  for (ParticleSpec& p : scene.particles) p.position *= 0.85;  // neighbours overlap from the start
-  scene.gravity *= 50;
-  return scene;
-}
-
 TEST(VerletSkin, ChangesNoResultBetweenWalls) {
   for (const SimdPath path : {SimdPath::Baseline, SimdPath::Wide}) {
     for (const bool polygons : {false, true}) {
       const std::string what = std::string(path == SimdPath::Wide ? "wide" : "baseline") + (polygons ? ", polygons" : ", discs");
       overrideSimdPath(path);
-      const Scene scene = pressedPile(polygons);
+      const Scene scene = test::pressedPile(10, 10, polygons, 11);
       WorldSettings thick, thin, thinnest;
       thick.skinFraction = 0.3;
       thin.skinFraction = 0.15;

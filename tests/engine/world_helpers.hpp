@@ -1,11 +1,26 @@
 #pragma once
 // Small builders shared by the engine tests.
+#include <algorithm>
 #include <cstdint>
+#include <random>
 #include <vector>
 
+#include "grainlab/bench_scenes.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab::test {
+
+/// A pile of columns × rows discs or polygons (pileScene), shuffled with `seed` so that no
+/// particle order follows space, its positions drawn together by 0.85 so that neighbours
+/// overlap from the start, and pressed under 50 g.
+inline Scene pressedPile(int columns, int rows, bool polygons, std::uint64_t seed) {
+  Scene scene = pileScene(columns, rows, polygons);
+  std::mt19937_64 rng(seed);
+  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+  for (ParticleSpec& p : scene.particles) p.position *= 0.85;
+  scene.gravity *= 50;
+  return scene;
+}
 
 inline ParticleSpec disc(double r, Vec2 x, Vec2 v = Vec2::Zero(), double spin = 0) {
   ParticleSpec p;
