@@ -28,22 +28,20 @@ int PolygonCollider::add(const Polygon& poly) {
 
 void PolygonCollider::refreshPolygons(int a, const Pose& pa, int b, const Pose& pb, CachedContact& k,
                                       SlackGuards guards) const {
-  const Polygon& A = polygon(a);
-  const Polygon& B = polygon(b);
   const PolygonFeatureTable& ta = featureTables_[static_cast<size_t>(a)];
   const PolygonFeatureTable& tb = featureTables_[static_cast<size_t>(b)];
   if (k.kind == CachedContact::Kind::Apart) {
     // The face that separated the pair last time usually still does.
     const double reach = 2 * tolerances_.margin;
-    if (const double separation = separationAlongAxis(A, ta, pa, B, tb, pb, k); separation > reach) {
+    if (const double separation = separationAlongAxis(ta, pa, tb, pb, k); separation > reach) {
       k.slack = separation - reach;
-      anchor(k, pa, A.circumradius, pb, B.circumradius);
+      anchor(k, pa, ta.circumradius, pb, tb.circumradius);
       return;
     }
   }
-  findPolygonFeatures(A, ta, pa, B, tb, pb, tolerances_, k, guards);
+  findPolygonFeatures(ta, pa, tb, pb, tolerances_, k, guards);
   searches_.fetch_add(1, std::memory_order_relaxed);
-  anchor(k, pa, A.circumradius, pb, B.circumradius);
+  anchor(k, pa, ta.circumradius, pb, tb.circumradius);
 }
 
 void PolygonCollider::refreshDisc(int a, const Pose& pa, const Vec2& xb, double rb, CachedContact& k,

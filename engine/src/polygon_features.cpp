@@ -4,6 +4,9 @@
 #include <cfloat>
 #include <limits>
 
+#include "grainlab/simd_path.hpp"
+#include "polygon_separation_kernel.hpp"
+
 namespace grainlab {
 namespace {
 
@@ -72,6 +75,43 @@ double maxSeparation(const double* separation, int count, int& face, double& run
   return best;
 }
 
+// b2FindMaxSeparation for ref's faces against `other` placed by f (its slots into wx, wy): the
+// scalar loops above, or on the wide path the kernel that has their bits.
+double bestSeparatingFace(bool wide, const Frame& f, const PolygonFeatureTable& ref, const PolygonFeatureTable& other,
+                          double* wx, double* wy, int& face, double& runnerUp) {
+  if (wide) return bestSeparatingFaceWide(ref, other, f.d.x(), f.d.y(), f.c, f.s, wx, wy, face, runnerUp);
+  alignas(64) double separation[kSlots];
+  placeSlots(f, other, wx, wy);
+  faceSeparations(ref, ref.count, wx, wy, other.count, separation);
+  return maxSeparation(separation, ref.count, face, runnerUp);
+}
+
+// b2FindIncidentEdge: I's face most anti-parallel to the reference normal n, I seen from the
+// reference body by f (n·turn(f, m_q), every slot, then the first of equals and the runner-up in
+// order), or on the wide path the kernel that has these bits.
+int mostAntiParallelEdge(bool wide, const Vec2& n, const Frame& f, const PolygonFeatureTable& tI, double& least,
+                         double& nextLeast) {
+  if (wide) return mostAntiParallelEdgeWide(n.x(), n.y(), f.c, f.s, tI, least, nextLeast);
+  alignas(64) double facing[kSlots];
+  for (int q = 0; q < kSlots; ++q) {
+    facing[q] = n.x() * (f.c * tI.nx[q] - f.s * tI.ny[q]) + n.y() * (f.s * tI.nx[q] + f.c * tI.ny[q]);
+  }
+  int incident = 0;
+  least = std::numeric_limits<double>::infinity();
+  nextLeast = least;
+  for (int q = 0; q < tI.count; ++q) {
+    const double d = facing[q];
+    if (d < least) {
+      nextLeast = least;
+      least = d;
+      incident = q;
+    } else if (d < nextLeast) {
+      nextLeast = d;
+    }
+  }
+  return incident;
+}
+
 // b2ClipSegmentToLine: the part of segment `in` where n·p ≤ offset; false if less than a
 // segment's two points remain (Box2D then reports no contact).
 bool clipSegment(Vec2 (&seg)[2], const Vec2& n, double offset) {
@@ -110,65 +150,46 @@ PolygonFeatureTable PolygonFeatureTable::of(const Polygon& p) {
     t.vx[e] = p.vertices[e].x();
     t.vy[e] = p.vertices[e].y();
   }
+  t.count = p.count;
+  t.circumradius = p.circumradius;
   return t;
 }
 
 void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                          const FeatureTolerances& tol, CachedContact& k) {
-  findPolygonFeatures(A, PolygonFeatureTable::of(A), pa, B, PolygonFeatureTable::of(B), pb, tol, k);
+  findPolygonFeatures(PolygonFeatureTable::of(A), pa, PolygonFeatureTable::of(B), pb, tol, k);
 }
 
-void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
-                         const PolygonFeatureTable& tb, const Pose& pb, const FeatureTolerances& tol,
-                         CachedContact& k, SlackGuards guards) {
+void findPolygonFeatures(const PolygonFeatureTable& ta, const Pose& pa, const PolygonFeatureTable& tb, const Pose& pb,
+                         const FeatureTolerances& tol, CachedContact& k, SlackGuards guards) {
   const double reach = 2 * tol.margin;  // both polygons' margins, as Box2D's totalRadius
   const Frame ba = relative(pa, pb), ab = relative(pb, pa);
   // Each polygon in the other's frame, and each face's separation of the other polygon.
-  alignas(64) double wbx[kSlots], wby[kSlots], wax[kSlots], way[kSlots], sepA[kSlots], sepB[kSlots];
-  placeSlots(ba, tb, wbx, wby);
-  faceSeparations(ta, A.count, wbx, wby, B.count, sepA);
+  alignas(64) double wbx[kSlots], wby[kSlots], wax[kSlots], way[kSlots];
+  const bool wide = simdPath() == SimdPath::Wide;
   int faceA = 0, faceB = 0;
   double runnerUpA, runnerUpB;
-  const double separationA = maxSeparation(sepA, A.count, faceA, runnerUpA);
+  const double separationA = bestSeparatingFace(wide, ba, ta, tb, wbx, wby, faceA, runnerUpA);
   if (separationA > reach) return setApart(k, false, faceA, separationA, reach);
-  placeSlots(ab, ta, wax, way);
-  faceSeparations(tb, B.count, wax, way, A.count, sepB);
-  const double separationB = maxSeparation(sepB, B.count, faceB, runnerUpB);
+  const double separationB = bestSeparatingFace(wide, ab, tb, ta, wax, way, faceB, runnerUpB);
   if (separationB > reach) return setApart(k, true, faceB, separationB, reach);
 
   const bool onB = separationB > separationA + tol.referenceTolerance;
-  const Polygon& R = onB ? B : A;
-  const Polygon& I = onB ? A : B;
+  const PolygonFeatureTable& tR = onB ? tb : ta;
   const PolygonFeatureTable& tI = onB ? ta : tb;
   const Frame& f = onB ? ab : ba;  // I seen from R
   const double* wx = onB ? wax : wbx;
   const double* wy = onB ? way : wby;
   const int e = onB ? faceB : faceA;
-  // b2FindIncidentEdge: I's face most anti-parallel to the reference normal (n·turn(f, m_q),
-  // every slot, then the first of equals and the runner-up in order).
-  const Vec2& n = R.normals[e];
-  alignas(64) double facing[kSlots];
-  for (int q = 0; q < kSlots; ++q) {
-    facing[q] = n.x() * (f.c * tI.nx[q] - f.s * tI.ny[q]) + n.y() * (f.s * tI.nx[q] + f.c * tI.ny[q]);
-  }
-  int incident = 0;
-  double least = std::numeric_limits<double>::infinity(), nextLeast = least;
-  for (int q = 0; q < I.count; ++q) {
-    const double d = facing[q];
-    if (d < least) {
-      nextLeast = least;
-      least = d;
-      incident = q;
-    } else if (d < nextLeast) {
-      nextLeast = d;
-    }
-  }
+  const Vec2 n(tR.nx[e], tR.ny[e]);
+  double least, nextLeast;
+  const int incident = mostAntiParallelEdge(wide, n, f, tI, least, nextLeast);
   // Box2D's clipping: the incident edge cut to the face's sides widened by the reach; some
   // point left must lie within the reach of the face.
   const Vec2 t = perp(n);  // along the face, counter-clockwise
-  const Vec2& v1 = R.vertices[e];
-  const Vec2& v2 = R.vertices[(e + 1) % R.count];
-  const int next = (incident + 1) % I.count;
+  const int after = (e + 1) % tR.count;
+  const Vec2 v1(tR.vx[e], tR.vy[e]), v2(tR.vx[after], tR.vy[after]);
+  const int next = (incident + 1) % tI.count;
   Vec2 seg[2] = {Vec2(wx[incident], wy[incident]), Vec2(wx[next], wy[next])};
   const bool spans = clipSegment(seg, -t, -t.dot(v1) + reach) && clipSegment(seg, t, t.dot(v2) + reach);
   const double front = n.dot(v1);
@@ -185,7 +206,7 @@ void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const 
   // answers the same while m stays below each decision's margin (halved where the decision
   // compares two moving values). Decisions tied closer than the speculative margin are kept
   // for that margin: a delayed switch then changes a depth by less than Box2D's own choice.
-  const double lever = std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + A.circumradius + B.circumradius;
+  const double lever = std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + ta.circumradius + tb.circumradius;
   const double bestFace = 0.5 * ((onB ? separationB - runnerUpB : separationA - runnerUpA));
   const double reference = 0.5 * std::abs(separationB - separationA - tol.referenceTolerance);
   const double inReach = guards == SlackGuards::EveryDecision ? reach - std::max(separationA, separationB)
@@ -248,14 +269,14 @@ void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double r
 
 double separationAlongAxis(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                            const CachedContact& k) {
-  return separationAlongAxis(A, PolygonFeatureTable::of(A), pa, B, PolygonFeatureTable::of(B), pb, k);
+  return separationAlongAxis(PolygonFeatureTable::of(A), pa, PolygonFeatureTable::of(B), pb, k);
 }
 
-double separationAlongAxis(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
-                           const PolygonFeatureTable& tb, const Pose& pb, const CachedContact& k) {
+double separationAlongAxis(const PolygonFeatureTable& ta, const Pose& pa, const PolygonFeatureTable& tb,
+                           const Pose& pb, const CachedContact& k) {
   const PolygonFeatureTable& ref = k.axisOnB ? tb : ta;
   const PolygonFeatureTable& other = k.axisOnB ? ta : tb;
-  const int count = k.axisOnB ? A.count : B.count;
+  const int count = other.count;
   const Frame f = k.axisOnB ? relative(pb, pa) : relative(pa, pb);
   // The one face's separation: n·w − n·v_e over the other polygon's vertices.
   const int e = k.reference;

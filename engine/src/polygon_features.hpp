@@ -66,9 +66,14 @@ inline double relativeMotion(const CachedContact& k, const Pose& pa, const Pose&
 /// A polygon's faces and vertices as the feature search reads them: structure of arrays,
 /// padded to kMaxPolygonVertices slots (zeros past `count`), with each face's offset n·v_e
 /// computed once (the expression the search used to evaluate per face per search, so its bits).
+/// It carries what else the search reads of a polygon (its corner count and circumradius), so
+/// that a search touches only the two tables: a search comes at a pair's rare event, when its
+/// polygons' records are seldom in cache.
 struct alignas(64) PolygonFeatureTable {
   double nx[kMaxPolygonVertices], ny[kMaxPolygonVertices], offset[kMaxPolygonVertices];
   double vx[kMaxPolygonVertices], vy[kMaxPolygonVertices];
+  int count;
+  double circumradius;
   static PolygonFeatureTable of(const Polygon& p);
 };
 
@@ -89,11 +94,11 @@ enum class SlackGuards { EveryDecision, FeatureChoices };
 /// is left out (SlackGuards).
 void findPolygonFeatures(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                          const FeatureTolerances& tol, CachedContact& k);
-/// The same search with both polygons' tables at hand (PolygonCollider keeps them): the same
-/// answer, bit for bit, without building them.
-void findPolygonFeatures(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
-                         const PolygonFeatureTable& tb, const Pose& pb, const FeatureTolerances& tol,
-                         CachedContact& k, SlackGuards guards = SlackGuards::EveryDecision);
+/// The same search from both polygons' tables (PolygonCollider keeps them): the same answer,
+/// bit for bit, without building them.
+void findPolygonFeatures(const PolygonFeatureTable& ta, const Pose& pa, const PolygonFeatureTable& tb, const Pose& pb,
+                         const FeatureTolerances& tol, CachedContact& k,
+                         SlackGuards guards = SlackGuards::EveryDecision);
 
 /// Features of polygon A against a disc of radius rb centred at xb.
 /// Its slack: the speculative margin (every decision, the baseline), or with FeatureChoices the
@@ -106,8 +111,8 @@ void findDiscFeatures(const Polygon& A, const Pose& pa, const Vec2& xb, double r
 /// coherence: a pair that stays apart is re-checked with one face instead of all of both).
 double separationAlongAxis(const Polygon& A, const Pose& pa, const Polygon& B, const Pose& pb,
                            const CachedContact& k);
-/// The same, with the polygons' tables.
-double separationAlongAxis(const Polygon& A, const PolygonFeatureTable& ta, const Pose& pa, const Polygon& B,
-                           const PolygonFeatureTable& tb, const Pose& pb, const CachedContact& k);
+/// The same, from the polygons' tables.
+double separationAlongAxis(const PolygonFeatureTable& ta, const Pose& pa, const PolygonFeatureTable& tb,
+                           const Pose& pb, const CachedContact& k);
 
 }  // namespace grainlab

@@ -4,7 +4,8 @@
 // search of grainlab 465684a returned (copied below as the reference), on random polygon pairs
 // and polygon-disc pairs: overlapping, touching, near-touching (on either side of the speculative
 // margin), apart, and exact ties (parallel faces, symmetric placements of regular polygons at
-// angles whose cosine and sine are exact). Both contact paths (GRAINLAB_SIMD) are checked.
+// angles whose cosine and sine are exact). Both contact paths (GRAINLAB_SIMD) are checked, the
+// wide one (whose scans run several faces per instruction) on every instruction set.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "polygon_collider.hpp"
@@ -248,11 +250,15 @@ struct Random {
   }
 };
 
-// The paths the search can take (the baseline and, where built, the wide one).
-std::vector<SimdPath> paths() {
-  std::vector<SimdPath> p{SimdPath::Baseline};
-  if (test::wideSimdBuilt()) p.push_back(SimdPath::Wide);
-  return p;
+// Calls f(label) on each path the search can take: the baseline and, where built, the wide one
+// with every instruction set Highway compiled that this CPU has (its scans run several faces per
+// instruction: vectors of 1, 2, 4 and 8 doubles).
+template <class F>
+void onEveryPath(const F& f) {
+  overrideSimdPath(SimdPath::Baseline);
+  f(std::string("baseline"));
+  overrideSimdPath(std::nullopt);
+  if (test::wideSimdBuilt()) test::onEveryWideTarget([&](const std::string& target) { f("wide " + target); });
 }
 
 struct Counts {
@@ -266,8 +272,8 @@ struct Counts {
   }
 };
 
-// The pair through every entry point (both paths, with and without the collider's tables),
-// against the reference; for an apart pair, separationAlongAxis too.
+// The pair through every entry point (every path and instruction set, with and without the
+// collider's tables), against the reference; for an apart pair, separationAlongAxis too.
 class Checker {
  public:
   Checker() : collider_(kScale), tol_(collider_.tolerances()) {}
@@ -278,21 +284,24 @@ class Checker {
     CachedContact want = blank();
     reference::findPolygonFeatures(A, pa, B, pb, tol_, want);
     const PolygonFeatureTable ta = PolygonFeatureTable::of(A), tb = PolygonFeatureTable::of(B);
-    for (const SimdPath path : paths()) {
-      overrideSimdPath(path);
+    ::testing::AssertionResult result = ::testing::AssertionSuccess();
+    onEveryPath([&](const std::string& path) {
+      if (!result) return;
       CachedContact got = blank();
-      findPolygonFeatures(A, ta, pa, B, tb, pb, tol_, got);
+      findPolygonFeatures(ta, pa, tb, pb, tol_, got);
       CachedContact viaPolygons = blank();
       findPolygonFeatures(A, pa, B, pb, tol_, viaPolygons);
-      overrideSimdPath(std::nullopt);
-      if (auto r = sameContact(got, want); !r) return r << " (tables, path " << int(path) << ")";
-      if (auto r = sameContact(viaPolygons, want); !r) return r << " (polygons, path " << int(path) << ")";
-      if (want.kind == Kind::Apart) {
-        const double s = separationAlongAxis(A, ta, pa, B, tb, pb, want);
+      if (auto r = sameContact(got, want); !r) {
+        result = r << " (tables, " << path << ")";
+      } else if (auto q = sameContact(viaPolygons, want); !q) {
+        result = q << " (polygons, " << path << ")";
+      } else if (want.kind == Kind::Apart) {
+        const double s = separationAlongAxis(ta, pa, tb, pb, want);
         const double r = reference::separationAlongAxis(A, pa, B, pb, want);
-        if (bits(s) != bits(r)) return ::testing::AssertionFailure() << "separationAlongAxis " << s << " vs " << r;
+        if (bits(s) != bits(r)) result = ::testing::AssertionFailure() << "separationAlongAxis " << s << " vs " << r;
       }
-    }
+    });
+    if (!result) return result;
     if (found) *found = want;
     return ::testing::AssertionSuccess();
   }
@@ -301,13 +310,13 @@ class Checker {
                                   CachedContact* found = nullptr) {
     CachedContact want = blank();
     reference::findDiscFeatures(A, pa, xb, rb, tol_, want);
-    for (const SimdPath path : paths()) {
-      overrideSimdPath(path);
+    ::testing::AssertionResult result = ::testing::AssertionSuccess();
+    onEveryPath([&](const std::string& path) {
       CachedContact got = blank();
       findDiscFeatures(A, pa, xb, rb, tol_, got);
-      overrideSimdPath(std::nullopt);
-      if (auto r = sameContact(got, want); !r) return r << " (path " << int(path) << ")";
-    }
+      if (auto r = sameContact(got, want); !r && result) result = r << " (" << path << ")";
+    });
+    if (!result) return result;
     if (found) *found = want;
     return ::testing::AssertionSuccess();
   }
