@@ -298,7 +298,9 @@ class Checker {
       } else if (want.kind == Kind::Apart) {
         const double s = separationAlongAxis(ta, pa, tb, pb, want);
         const double r = reference::separationAlongAxis(A, pa, B, pb, want);
-        if (bits(s) != bits(r)) result = ::testing::AssertionFailure() << "separationAlongAxis " << s << " vs " << r;
+        if (bits(s) != bits(r)) {
+          result = ::testing::AssertionFailure() << "separationAlongAxis " << s << " vs " << r << " (" << path << ")";
+        }
       }
     });
     if (!result) return result;
