@@ -206,7 +206,8 @@ void findPolygonFeatures(const PolygonFeatureTable& ta, const Pose& pa, const Po
   // answers the same while m stays below each decision's margin (halved where the decision
   // compares two moving values). Decisions tied closer than the speculative margin are kept
   // for that margin: a delayed switch then changes a depth by less than Box2D's own choice.
-  const double lever = std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + ta.circumradius + tb.circumradius;
+  const double lever =
+      std::abs(pb.x.x() - pa.x.x()) + std::abs(pb.x.y() - pa.x.y()) + ta.circumradius + tb.circumradius;
   const double bestFace = 0.5 * ((onB ? separationB - runnerUpB : separationA - runnerUpA));
   const double reference = 0.5 * std::abs(separationB - separationA - tol.referenceTolerance);
   const double inReach = guards == SlackGuards::EveryDecision ? reach - std::max(separationA, separationB)
