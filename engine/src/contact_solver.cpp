@@ -90,6 +90,13 @@ void ContactSolver::clearTangentialHistory() {
   discBatchStale_ = true;
 }
 
+void ContactSolver::setPool(WorkerPool* pool) {
+  writeBackWideState();  // the disc batch is planned per thread: its state goes back to the list first
+  pool_ = pool;
+  discBatchStale_ = true;
+  deferredSlotsStale_ = true;
+}
+
 void ContactSolver::writeBackWideState() const {
   if (!wideStateAhead_) return;
   // The pairs' state is part of this solver's value: the batch only held it for the wide path.

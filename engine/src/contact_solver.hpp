@@ -51,6 +51,9 @@ class ContactSolver {
   void computeForces(double dt, bool moved);
   /// Frictional springs built under another friction are stale: every pair's is dropped.
   void clearTangentialHistory();
+  /// From the next step on, the force loop runs on `pool` (null: serially). The forces keep
+  /// their bits: only the plans that follow the thread count are made again.
+  void setPool(WorkerPool* pool);
 
   void contacts(std::vector<ContactRecord>& out) const;
   /// grainlab::contactStress over contacts(), with the same terms in the same order (the same

@@ -34,6 +34,13 @@ DemSolver::DemSolver(ParticleStore& particles, const Material& material, int thr
 
 DemSolver::~DemSolver() = default;
 
+void DemSolver::setThreads(int threads) {
+  // The contact solver lets go of the old pool (and replans for the new) before it goes.
+  std::unique_ptr<WorkerPool> pool = makePool(threads);
+  contacts_.setPool(pool.get());
+  pool_ = std::move(pool);
+}
+
 void DemSolver::forEachParticleRange(const std::function<void(int, int)>& body) {
   if (pool_) pool_->parallelFor(particles_.size(), body);
   else body(0, particles_.size());

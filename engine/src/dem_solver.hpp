@@ -27,6 +27,7 @@ class DemSolver final : public Solver {
   void frictionChanged(double) override {
     members_ ? members_->clearTangentialHistory() : contacts_.clearTangentialHistory();
   }
+  void setThreads(int threads) override;
 
   double timestepScale() const override { return 1.0; }
   bool boundedByCriticalTimestep() const override { return true; }

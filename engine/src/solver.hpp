@@ -27,6 +27,10 @@ class Solver {
   virtual void step(double dt, std::int64_t step) = 0;
   /// The material's friction has changed (it does between the paper's stages).
   virtual void frictionChanged(double mu) = 0;
+  /// From the next step on, work on `threads` threads (the caller's included). A solver whose
+  /// results do not depend on the count may take it at any step; one that runs serially
+  /// ignores it.
+  virtual void setThreads(int /*threads*/) {}
 
   /// Its default timestep is this multiple of timestep_safety × the critical timestep.
   virtual double timestepScale() const = 0;

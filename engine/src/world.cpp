@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "dem_solver.hpp"
 #include "grainlab/errors.hpp"
@@ -40,6 +41,13 @@ int World::addWall(const Wall& wall) {
   const int index = particles_.addWall(wall);
   prepared_ = false;
   return index;
+}
+
+void World::setThreads(int threads) {
+  if (threads < 1) throw std::invalid_argument("threads must be at least 1, not " + std::to_string(threads));
+  if (threads == settings_.threads) return;
+  settings_.threads = threads;
+  solver_->setThreads(threads);
 }
 
 void World::setFriction(double mu) {

@@ -80,6 +80,11 @@ class World {
   /// `contacts` (optional) receive the particle that sets it and its contact count.
   double packingTimestep(int* particle = nullptr, int* contacts = nullptr) const;
   WorldSettings::Engine engine() const { return settings_.engine; }
+  /// Threads for the force computation, as settings.threads: may change between any two steps,
+  /// with the same results (box2d runs serially whatever the count). Throws
+  /// std::invalid_argument below 1.
+  void setThreads(int threads);
+  int threads() const { return settings_.threads; }
   /// The normal stiffness a contact shows to slow loading, N/m: k_n for dem; for box2d the
   /// rigid solver's apparent stiffness (RigidBodySolver::contactStiffness). Servo gains
   /// are derived from it.

@@ -1,0 +1,106 @@
+// A world's thread count may change between any two steps without changing a bit: a batch
+// lends a run the cores its finished runs leave idle (studies/run_batch.hpp), half-way through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "grainlab/bench_scenes.hpp"
+#include "grainlab/world.hpp"
+
+namespace grainlab {
+namespace {
+
+std::unique_ptr<World> pressedPile(const std::string& kind, WorldSettings::Engine engine = WorldSettings::Engine::Dem) {
+  Scene scene = pileScene(16, 16, kind == "polygons");
+  if (kind == "discs with rolling resistance") {
+    scene.material.rollingFriction = 0.1;
+    scene.material.rollingDamping = 0.3;
+  }
+  // Shuffled, neighbours' indices lie far apart: with several threads most particles straddle
+  // slices of the pair list, so the plans for the thread count decide where their shares go.
+  // Pressed 8% closer than the lattice under 50 g, the pile stays in contact throughout.
+  std::mt19937_64 rng(7);
+  std::shuffle(scene.particles.begin(), scene.particles.end(), rng);
+  for (ParticleSpec& p : scene.particles) p.position *= 0.92;
+  WorldSettings settings;
+  settings.engine = engine;
+  auto world = std::make_unique<World>(scene.material, settings);
+  for (const ParticleSpec& p : scene.particles) world->addParticle(p);
+  for (const Wall& w : scene.walls) world->addWall(w);
+  world->setGravity(50 * scene.gravity);
+  return world;
+}
+
+// Every bit of the particles' state.
+std::string stateBits(const World& w) {
+  std::string bits;
+  auto add = [&](const auto& span) {
+    bits.append(reinterpret_cast<const char*>(span.data()), span.size_bytes());
+  };
+  add(w.positions());
+  add(w.velocities());
+  add(w.angles());
+  add(w.spins());
+  add(w.forces());
+  add(w.torques());
+  return bits;
+}
+
+TEST(ThreadChange, BetweenStepsKeepsEveryBit) {
+  for (const char* kind : {"discs", "polygons", "discs with rolling resistance"}) {
+    std::unique_ptr<World> serial = pressedPile(kind), changing = pressedPile(kind);
+    // Settled a while on one thread, the pile is in contact throughout what follows.
+    for (int k = 0; k < 10000; ++k) {
+      serial->step();
+      changing->step();
+    }
+    // Then two threads, three, back to one and to two: each change replans the force loop
+    // mid-run, with the pairs' state (springs, rolling) carried across.
+    int fewestTouching = 1 << 30;
+    for (int threads : {2, 3, 1, 2}) {
+      changing->setThreads(threads);
+      EXPECT_EQ(changing->threads(), threads);
+      for (int k = 0; k < 1000; ++k) {
+        serial->step();
+        changing->step();
+      }
+      ASSERT_EQ(stateBits(*serial), stateBits(*changing)) << kind << ", after a stretch on " << threads << " threads";
+      std::vector<ContactRecord> contacts;
+      changing->contacts(contacts);
+      fewestTouching = std::min(fewestTouching, static_cast<int>(contacts.size()));
+    }
+    // The comparison means something only if the pile is in contact throughout.
+    EXPECT_GT(fewestTouching, 100) << kind;
+  }
+}
+
+TEST(ThreadChange, TheRigidBodySolverTakesAnyCountAndStaysSerial) {
+  std::unique_ptr<World> serial = pressedPile("discs", WorldSettings::Engine::Box2d);
+  std::unique_ptr<World> changing = pressedPile("discs", WorldSettings::Engine::Box2d);
+  changing->setThreads(2);
+  for (int k = 0; k < 50; ++k) {
+    serial->step();
+    changing->step();
+  }
+  EXPECT_EQ(stateBits(*serial), stateBits(*changing));
+}
+
+TEST(ThreadChange, FewerThanOneThreadIsRefusedAndChangesNothing) {
+  std::unique_ptr<World> world = pressedPile("discs");
+  world->setThreads(2);
+  try {
+    world->setThreads(0);
+    FAIL() << "0 threads accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("threads"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(world->threads(), 2);
+}
+
+}  // namespace
+}  // namespace grainlab
