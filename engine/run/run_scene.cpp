@@ -101,6 +101,9 @@ class RunLoop {
           return;
         }
         stopping = stopping || observer_.stopRequested();
+        if (const int threads = scene_.solver.threads + observer_.threadsLent(); threads != world_.threads()) {
+          world_.setThreads(threads);
+        }
         if (!world_.resumable()) continue;
         if (stopping) {
           checkpoint(loop, summary);

@@ -3,15 +3,18 @@
 // complete.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "grainlab/output_writer.hpp"
 #include "grainlab/run_output.hpp"
 #include "grainlab/scene.hpp"
 #include "grainlab/studies/cluster.hpp"
 #include "grainlab/studies/run_batch.hpp"
+#include "grainlab/world.hpp"
 
 #include "../support/file_bytes.hpp"
 
@@ -160,6 +163,55 @@ TEST_F(RunBatchTest, ARunKilledHalfWayResumesFromItsCheckpointToTheSameOutputs) 
     EXPECT_EQ(fileBytes(runs_[0].dir / file), fileBytes(direct / file)) << file;
   EXPECT_FALSE(fs::exists(runs_[0].dir / "checkpoint.bin")) << "a finished run keeps no checkpoint";
   EXPECT_FALSE(fs::exists(partial));
+}
+
+// Once no run is left to start, a finished run's core goes to the run still going, which
+// takes it at its next progress report and ends with the outputs it would have had alone.
+// Writes what `grainlab run` writes, and notes the most threads the run's world stepped on.
+class ThreadWatcher : public OutputWriter {
+ public:
+  ThreadWatcher(const fs::path& dir, int& most) : OutputWriter(dir.string(), nullptr), most_(most) {}
+  void onProgress(double fraction, std::string_view stage, const World& w) override {
+    OutputWriter::onProgress(fraction, stage, w);
+    most_ = std::max(most_, w.threads());
+  }
+
+ private:
+  int& most_;
+};
+
+TEST_F(RunBatchTest, TheLastRunBorrowsTheCoreAFinishedRunLeftIdle) {
+  runs_.resize(2);
+  runs_[1].scene["stages"][0]["duration"] = 0.2;  // 400 times run0's: it reports long after run0 ends
+  BatchOptions options;
+  options.jobs = 2;
+  int mostThreads[2] = {0, 0};
+  options.observer = [&](const BatchRun& r, const fs::path& work) -> std::unique_ptr<RunObserver> {
+    return std::make_unique<ThreadWatcher>(work, mostThreads[r.id == "run1"]);
+  };
+  const std::vector<BatchRunResult> results = run(options);
+  for (const BatchRunResult& r : results) ASSERT_EQ(r.status, RunStatus::Completed) << r.error;
+  EXPECT_EQ(results[0].threadsLent, 0) << "while both ran, no core was idle";
+  EXPECT_EQ(results[1].threadsLent, 1);
+  EXPECT_EQ(mostThreads[0], 1);
+  EXPECT_EQ(mostThreads[1], 2) << "the run's world stepped on the core it was lent";
+  const fs::path direct = dir_ / "direct";
+  OutputWriter writer(direct.string(), nullptr);
+  runScene(parseScene(runs_[1].scene), writer);
+  for (const char* file : {"series.csv", "particles_final.csv", "contacts_final.csv"})
+    EXPECT_EQ(fileBytes(runs_[1].dir / file), fileBytes(direct / file)) << file;
+}
+
+// More jobs than runs: the spare cores are lent from the start, up to the machine's own.
+TEST_F(RunBatchTest, ASingleRunTakesTheSpareCoresItIsGiven) {
+  runs_.resize(1);
+  runs_[0].scene["stages"][0]["duration"] = 0.01;
+  BatchOptions options;
+  options.jobs = 2;
+  const std::vector<BatchRunResult> results = run(options);
+  ASSERT_EQ(results[0].status, RunStatus::Completed) << results[0].error;
+  const int spare = std::min(2u, std::max(1u, std::thread::hardware_concurrency())) - 1;
+  EXPECT_EQ(results[0].threadsLent, spare);
 }
 
 TEST_F(RunBatchTest, APartialOrUnreadableDirectoryIsNotAFinishedRun) {

@@ -88,6 +88,10 @@ class RunObserver {
   /// Polled with onProgress; true stops the run as interrupted, after a checkpoint (a
   /// clean stop: SIGTERM, a server shutting down), so it can be resumed.
   virtual bool stopRequested() { return false; }
+  /// Polled with onProgress: threads lent to the run beyond its scene's solver.threads (a
+  /// batch lends a run the cores its finished runs leave idle). The run takes them at once;
+  /// they change no result, only how soon it comes.
+  virtual int threadsLent() { return 0; }
   /// Checkpoints: the observer's own part of the run's state. Saving, it first makes what
   /// it has written so far durable, then records where it stands (a file's length, a sample
   /// count); loading, before onResume, it reads that back.

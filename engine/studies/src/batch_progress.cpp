@@ -43,12 +43,14 @@ void BatchProgress::advanced(const std::string& id, double fraction) {
   if (std::chrono::duration<double>(now - lastLine_).count() >= kAdvanceLineSeconds) print("");
 }
 
-void BatchProgress::finished(const std::string& id, RunStatus status, double wallSeconds) {
+void BatchProgress::finished(const std::string& id, RunStatus status, double wallSeconds, int threadsLent) {
   std::lock_guard lock(mutex_);
   std::erase_if(running_, [&](const auto& r) { return r.first == id; });
   ++done_;
   if (status != RunStatus::Completed) ++failed_;
-  print(id + " " + std::string(toString(status)) + " in " + formatDuration(wallSeconds));
+  std::string event = id + " " + std::string(toString(status)) + " in " + formatDuration(wallSeconds);
+  if (threadsLent > 0) event += ", with " + std::to_string(threadsLent) + (threadsLent == 1 ? " idle core" : " idle cores") + " lent";
+  print(event);
 }
 
 void BatchProgress::print(const std::string& event) {

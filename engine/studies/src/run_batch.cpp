@@ -16,18 +16,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Passes every event on to the run's own observer and tells the progress line how far it is.
+// Passes every event on to the run's own observer, tells the progress line how far it is, and
+// hands the run the cores it is lent.
 class ProgressRelay : public RunObserver {
  public:
-  ProgressRelay(RunObserver& inner, BatchProgress& progress, const std::string& id)
-      : inner_(inner), progress_(progress), id_(id) {}
+  ProgressRelay(RunObserver& inner, BatchProgress& progress, const std::string& id, CoreLending* lending)
+      : inner_(inner), progress_(progress), id_(id), lending_(lending) {}
   void onEstimate(const RunCost& c) override { inner_.onEstimate(c); }
   void onStart(const Scene& s, const World& w) override { inner_.onStart(s, w); }
   void onSample(const Sample& s, const World& w) override { inner_.onSample(s, w); }
   void onProgress(double fraction, std::string_view stage, const World& w) override {
     inner_.onProgress(fraction, stage, w);
     progress_.advanced(id_, fraction);
+    if (lending_) lending_->advanced(id_, fraction);
   }
+  int threadsLent() override { return lending_ ? lending_->threadsLent(id_) : 0; }
   bool cancelRequested() override { return inner_.cancelRequested(); }
   bool stopRequested() override { return inner_.stopRequested(); }
   void persistOutput(StateArchive& a) override { inner_.persistOutput(a); }
@@ -38,6 +41,7 @@ class ProgressRelay : public RunObserver {
   RunObserver& inner_;
   BatchProgress& progress_;
   const std::string& id_;
+  CoreLending* lending_;
 };
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -69,12 +73,17 @@ void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pe
   // A launcher binds each rank to a core: under `mpirun -np 1` two runs would share one.
   if (options.jobs == 0 && cluster.joinedMpi()) options.jobs = 1;
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const size_t threads = std::min<size_t>(options.jobs == 0 ? hardware : options.jobs, pending.size());
+  const size_t cores = options.jobs == 0 ? hardware : options.jobs;
+  const size_t threads = std::min<size_t>(cores, pending.size());
   std::atomic<size_t> next{0};
+  CoreLending lending;
+  // Cores beyond the runs (more jobs than runs, up to the machine's) are idle from the start.
+  lending.release(static_cast<int>(std::min<size_t>(cores, hardware)) - static_cast<int>(threads));
   auto worker = [&] {
     for (size_t k = next++; k < pending.size(); k = next++) {
-      results[pending[k]] = executeRun(runs[pending[k]], options.observer, progress);
+      results[pending[k]] = executeRun(runs[pending[k]], options.observer, progress, &lending);
     }
+    lending.release(1);  // no run left to start: this worker's core goes to the runs still going
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
@@ -84,9 +93,11 @@ void runLocally(const std::vector<BatchRun>& runs, const std::vector<size_t>& pe
 
 }  // namespace
 
-BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, BatchProgress& progress) {
+BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, BatchProgress& progress,
+                          CoreLending* lending) {
   const fs::path work = run.dir.parent_path() / ("." + run.dir.filename().string() + ".partial");
   progress.started(run.id);
+  if (lending) lending->started(run.id);
   BatchRunResult result;
   try {
     // Runs writing what `grainlab run` writes keep a checkpoint in their partial directory:
@@ -113,14 +124,14 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     std::unique_ptr<RunObserver> observer;
     if (resumable) {
       observer = makeObserver();
-      ProgressRelay relay(*observer, progress, run.id);
+      ProgressRelay relay(*observer, progress, run.id, lending);
       summary = resumeRun(checkpoint, relay, policy, stageDirectory);
       result.resumed = !summary.refused;
     }
     if (!result.resumed) {  // nothing to resume from, or its checkpoints could not be read
       if (resumable) startOver();
       observer = makeObserver();
-      ProgressRelay relay(*observer, progress, run.id);
+      ProgressRelay relay(*observer, progress, run.id, lending);
       summary = runScene(scene, relay, {}, policy, stageDirectory);
     }
     result.status = summary.status;
@@ -145,7 +156,8 @@ BatchRunResult executeRun(const BatchRun& run, const ObserverFactory& factory, B
     result.status = RunStatus::Failed;
     result.error = "cannot move the run into " + run.dir.string() + ": " + e.what();
   }
-  progress.finished(run.id, result.status, result.wallSeconds);
+  if (lending) result.threadsLent = lending->finished(run.id);
+  progress.finished(run.id, result.status, result.wallSeconds, result.threadsLent);
   return result;
 }
 

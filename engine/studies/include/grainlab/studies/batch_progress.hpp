@@ -19,7 +19,8 @@ class BatchProgress {
   void started(const std::string& id);
   /// A running run's own progress in [0, 1]; lines for these are at most every few seconds.
   void advanced(const std::string& id, double fraction);
-  void finished(const std::string& id, RunStatus status, double wallSeconds);
+  /// `threadsLent`: the most threads it ran on beyond its own (cores lent once the queue emptied).
+  void finished(const std::string& id, RunStatus status, double wallSeconds, int threadsLent = 0);
 
  private:
   void print(const std::string& event);  // with mutex_ held

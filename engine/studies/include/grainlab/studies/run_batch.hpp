@@ -6,7 +6,8 @@
 // already completed there for the same scene is skipped, so running the same batch again
 // resumes it (and a run whose scene changed is run again). A run killed half-way continues
 // from the checkpoint its partial directory keeps (every output.checkpoint_every_s), with
-// the outputs an uninterrupted run would have written.
+// the outputs an uninterrupted run would have written. On one machine, once no run is left to
+// start, the cores the finished runs leave idle are lent to the runs still going.
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -36,6 +37,9 @@ struct BatchRunResult {
   double wallSeconds = 0;
   bool reused = false;         ///< completed by an earlier invocation, not run again
   bool resumed = false;        ///< continued from the checkpoint an interrupted attempt left
+  /// The most threads it ran on beyond its scene's own: cores that finished runs left idle,
+  /// lent to it (same results, sooner). Always 0 under MPI.
+  int threadsLent = 0;
 };
 
 /// Builds the observer that writes one run's files into `workDir` (the partial directory).
