@@ -1,6 +1,6 @@
 // generateSpecimen: plan the size classes, orient and place the particles at random without
-// overlap in a circle looser than the final specimen, then close a ring of boundary discs
-// around them.
+// overlap in a circle looser than the final specimen, number them along space, then close a
+// ring of boundary discs around them.
 #include "grainlab/specimen.hpp"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "grainlab/errors.hpp"
+#include "specimen_order.hpp"
 #include "specimen_placement.hpp"
 #include "specimen_random.hpp"
 #include "specimen_recipe.hpp"
@@ -153,7 +154,9 @@ Specimen generateSpecimen(const SpecimenRecipe& recipe, std::uint64_t seed) {
   Specimen out;
   out.specimenCount = plan.count;
   out.particles.reserve(centres.size());
-  for (std::size_t i = 0; i < centres.size(); ++i) out.particles.push_back(particleOf(recipe, made, i, centres[i]));
+  // Numbered along space (specimen_order.hpp): placed at random, numbered in bands.
+  const double spacing = placementRadius * std::sqrt(kPi / static_cast<double>(std::max<std::size_t>(centres.size(), 1)));
+  for (std::size_t i : specimen::orderAlongSpace(centres, spacing)) out.particles.push_back(particleOf(recipe, made, i, centres[i]));
 
   const RingLayout ring = layoutRing(recipe, plan, placementRadius);
   for (int k = 0; k < ring.count; ++k) {

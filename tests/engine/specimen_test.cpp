@@ -308,6 +308,36 @@ TEST(SpecimenPlacement, NoTwoParticlesOverlapAndAllAreInsideTheRing) {
   }
 }
 
+// Numbered along space: each particle's nearest neighbour lies in its own band or the next,
+// so their indices differ by at most two bands' worth of particles, 8 √(N/π) for N particles
+// in bands two mean spacings tall across the circle. Numbered in the order of placement, the
+// gaps would be about N/3.
+TEST(SpecimenNumbering, NeighboursInSpaceAreNeighboursInIndex) {
+  for (const Recipe& r : {discs(), elongated(), elongated(0.160, Recipe::Orientation::Bedding, 30)}) {
+    const Specimen s = generateSpecimen(r, 5);
+    const auto spec = specimenOf(s);
+    const size_t n = spec.size();
+    ASSERT_GT(n, 500u);
+    std::vector<double> gaps;
+    for (size_t i = 0; i < n; ++i) {
+      size_t nearest = i;
+      double best = 1e300;
+      for (size_t j = 0; j < n; ++j) {
+        const double d = (spec[j].position - spec[i].position).squaredNorm();
+        if (j != i && d < best) {
+          best = d;
+          nearest = j;
+        }
+      }
+      gaps.push_back(std::abs(static_cast<double>(nearest) - static_cast<double>(i)));
+    }
+    std::sort(gaps.begin(), gaps.end());
+    const double twoBands = 8 * std::sqrt(n / kPi);
+    EXPECT_LT(gaps[n / 2], twoBands) << n << " particles";
+    EXPECT_LT(gaps[n * 9 / 10], twoBands) << n << " particles";
+  }
+}
+
 TEST(SpecimenPlacement, TinyCountsStillPlace) {
   for (int n : {1, 2, 3, 7}) {
     for (Recipe r : {discs(), elongated()}) {
