@@ -8,9 +8,10 @@
 # Verdicts are free to go either way where the physics decides, but two follow from the code
 # alone, run by run: the contact stress is symmetric (every particle in moment equilibrium at
 # the quasi-static rates of the presets: σ12 − σ21 below 1% of p), and for discs the branch
-# vector is r·n, so a_lt vanishes to rounding and a_ln is only the overlaps' trace, (δ/2r)·a_n,
-# below 1e-3 at 300 kPa. Each run must show them, and the merged findings must not deny them
-# (two seeds' t-interval, 12.7 standard errors wide, may leave them "not resolved").
+# vector is (r − δ/2)·n with δ = f_n/k_n, so a_lt vanishes to rounding and a_ln is only the
+# overlaps' trace: l0·a_ln = f0·a_n/(2 k_n), at right angles to the forces' direction. Each run
+# must show them, and the merged findings must not deny them (two seeds' t-interval, 12.7
+# standard errors wide, may leave them "not resolved").
 set -euo pipefail
 grainlab=$1
 tmp=$(mktemp -d)
@@ -47,7 +48,7 @@ else
 fi
 
 python3 - "$tmp/out" <<'PY'
-import csv, math, os, re, sys
+import csv, json, math, os, re, sys
 out = sys.argv[1]
 html = open(os.path.join(out, "report.html"), encoding="utf-8").read()
 def fail(msg):
@@ -131,9 +132,19 @@ for preset in ["circular", "elongated-random"] + ["elongated-bedding-%d" % a for
             fail(f"{preset}-quick seed {seed}: max |σ12 − σ21|/p = {asym} over the shearing, not below 1%")
         if preset == "circular":
             lt = max(abs(float(r["a_lt"])) for r in rows)
-            ln = max(abs(float(r["a_ln"])) for r in rows)
-            if not (lt < 1e-9 and ln < 1e-3):
-                fail(f"circular-quick seed {seed}: a_lt up to {lt} (a disc's l_t is zero: rounding only), a_ln up to {ln} (< 1e-3)")
+            if not lt < 1e-9:
+                fail(f"circular-quick seed {seed}: a_lt up to {lt} (a disc's l_t is zero: rounding only)")
+            # l0·a_ln = f0·a_n/(2 k_n), but for the dashpot's share of the normal forces, which
+            # no overlap carries: over every shearing sample of 16 runs of circular-quick it held
+            # within 6 %. A branch vector of r (no overlap) or of 2r − δ breaks it by 100 %.
+            scene = json.load(open(os.path.join(os.path.dirname(path), "scene.json"), encoding="utf-8"))
+            kn = float(scene["material"]["normal_stiffness"])
+            for r in rows:
+                expected = float(r["f0"]) * float(r["a_n"]) / (2 * kn * float(r["l0"]))
+                turn = (float(r["theta_ln_deg"]) - float(r["theta_n_deg"])) % 180
+                if not (abs(float(r["a_ln"]) - expected) <= 0.1 * expected and abs(turn - 90) < 5):
+                    fail(f"circular-quick seed {seed} at axial strain {r['axial_strain']}: a_ln {r['a_ln']} at "
+                         f"{r['theta_ln_deg']}°, but the overlaps give {expected} at 90° to θ_n = {r['theta_n_deg']}°")
 
 runs = list(csv.DictReader(open(os.path.join(out, "runs.csv"), encoding="utf-8")))
 if len(runs) != 12:
