@@ -10,6 +10,8 @@
 #include <string>
 
 #include "grainlab/bench_scenes.hpp"
+#include "grainlab/observer_tee.hpp"
+#include "grainlab/run.hpp"
 #include "grainlab/world.hpp"
 
 namespace grainlab {
@@ -77,6 +79,34 @@ TEST(ThreadChange, BetweenStepsKeepsEveryBit) {
     // The comparison means something only if the pile is in contact throughout.
     EXPECT_GT(fewestTouching, 100) << kind;
   }
+}
+
+// An observer that lends the run one thread and notes what it stepped on.
+class Lender : public RunObserver {
+ public:
+  explicit Lender(int lent) : lent_(lent) {}
+  int threadsLent() override { return lent_; }
+  void onProgress(double, std::string_view, const World& w) override { most = std::max(most, w.threads()); }
+  void onFinish(const RunSummary&, const World& w) override { final = stateBits(w); }
+  int most = 0;
+  std::string final;
+
+ private:
+  int lent_;
+};
+
+// The run loop takes the threads it is lent, also through a tee (the most any observer was
+// lent), and ends with the bits of a serial run.
+TEST(ThreadChange, ARunTakesTheThreadsItIsLentThroughATee) {
+  Scene scene = pileScene(16, 16, true);
+  scene.stages[0].duration = 0.005;  // s: some thousands of steps, a report every 200
+  Lender serial(0), quiet(0), lender(1);
+  ASSERT_EQ(runScene(scene, serial).status, RunStatus::Completed);
+  ObserverTee tee{&quiet, &lender};
+  ASSERT_EQ(runScene(scene, tee).status, RunStatus::Completed);
+  EXPECT_EQ(serial.most, 1);
+  EXPECT_EQ(lender.most, 2);
+  EXPECT_EQ(serial.final, lender.final);
 }
 
 TEST(ThreadChange, TheRigidBodySolverTakesAnyCountAndStaysSerial) {

@@ -1,6 +1,8 @@
 #pragma once
 // Several observers watching one run (the output files and the VTK frames, say): each call
-// goes to each of them in the order given; the run is cancelled if any of them asks.
+// goes to each of them in the order given; the run is cancelled if any of them asks, and takes
+// the threads any of them is lent.
+#include <algorithm>
 #include <initializer_list>
 #include <vector>
 
@@ -38,6 +40,12 @@ class ObserverTee : public RunObserver {
     bool stop = false;
     for (RunObserver* o : observers_) stop = o->stopRequested() || stop;
     return stop;
+  }
+  /// The most any of them was lent: one lender is enough.
+  int threadsLent() override {
+    int lent = 0;
+    for (RunObserver* o : observers_) lent = std::max(lent, o->threadsLent());
+    return lent;
   }
   void persistOutput(StateArchive& a) override {
     for (RunObserver* o : observers_) o->persistOutput(a);
