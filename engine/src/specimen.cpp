@@ -186,7 +186,11 @@ CellSpecimen generateCellSpecimen(const SpecimenRecipe& recipe, std::uint64_t se
   }
   if (!placed) throw SceneError("assembly", "could not place the particles without overlap in a periodic cell");
   CellSpecimen out;
-  for (std::size_t i = 0; i < placed->size(); ++i) out.particles.push_back(particleOf(recipe, made, i, (*placed)[i]));
+  // Numbered along space, as the ring's specimens are: the cell's particles are placed at
+  // random; its bands end at the cell's edges, where the first band meets the last.
+  const std::vector<Vec2>& centres = *placed;
+  const double spacing = side / std::sqrt(static_cast<double>(std::max<std::size_t>(centres.size(), 1)));
+  for (std::size_t i : specimen::orderAlongSpace(centres, spacing)) out.particles.push_back(particleOf(recipe, made, i, centres[i]));
   out.edges = Eigen::Matrix2d::Identity() * side;
   out.solidArea = plan.solidArea;
   return out;

@@ -2,6 +2,7 @@
 // images included, then consolidated in the cell by the isotropic servos.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -73,6 +74,37 @@ TEST(PeriodicSpecimen, SameSeedSameSpecimenOtherSeedAnother) {
 // isotropic servos at p. The specimen ends at p and dense: frictionless equal discs pack
 // between random close packing (about 0.82-0.84 in 2D) and the hexagonal 0.907, which they
 // partly reach by ordering (overlaps at p = 100 kPa add only ~p/k_n = 1e-3).
+// Numbered along space, as the ring's specimens are (specimen_order.hpp): in bands two mean
+// spacings s = L/√N tall across a cell of side L, each holding about 2√N particles. A particle's
+// nearest neighbour (measured straight, not across the edges) lies in its own band or the next,
+// so their indices differ by less than two bands' worth, 4√N. Numbered in the order of
+// placement, the gaps would be about N/3 (333 against 126 here).
+TEST(PeriodicSpecimen, NeighboursInSpaceAreNeighboursInIndex) {
+  for (SpecimenRecipe recipe : {discRecipe(), beddingRecipe()}) {
+    recipe.particleCount = 1000;
+    const CellSpecimen s = generateCellSpecimen(recipe, 5);
+    const size_t n = s.particles.size();
+    ASSERT_EQ(n, 1000u);
+    std::vector<double> gaps;
+    for (size_t i = 0; i < n; ++i) {
+      size_t nearest = i;
+      double best = 1e300;
+      for (size_t j = 0; j < n; ++j) {
+        const double d = (s.particles[j].position - s.particles[i].position).squaredNorm();
+        if (j != i && d < best) {
+          best = d;
+          nearest = j;
+        }
+      }
+      gaps.push_back(std::abs(static_cast<double>(nearest) - static_cast<double>(i)));
+    }
+    std::sort(gaps.begin(), gaps.end());
+    const double twoBands = 4 * std::sqrt(static_cast<double>(n));
+    EXPECT_LT(gaps[n / 2], twoBands);
+    EXPECT_LT(gaps[n * 9 / 10], twoBands);
+  }
+}
+
 TEST(PeriodicSpecimen, ConsolidatedInTheCellToP) {
   const CellSpecimen s = generateCellSpecimen(discRecipe(), 3);
   Material m;
