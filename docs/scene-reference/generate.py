@@ -86,7 +86,7 @@ MEANINGS = {
     "solver.engine": ("", "dem: grainlab's soft-contact DEM; box2d: Box2D's rigid-body solver"),
     "solver.timestep": ("s", "fixed timestep; 0: `timestep_safety` × the critical timestep"),
     "solver.timestep_safety": ("–", "fraction of the critical timestep 2√(m*/k) used when `timestep` is 0 (box2d: × 10 × it)"),
-    "solver.threads": ("", "force-computation threads (dem); results do not depend on it. On the paper's assemblies (about 1,400 particles) two threads ran 1.2-1.4 times as fast as one; for many runs, run more runs at once instead (--jobs): a batch lends the cores its finished runs leave idle to the runs still going (docs/benchmarks.md, \"Particles numbered along space\")"),
+    "solver.threads": ("", "force-computation threads (dem); results do not depend on it. On the paper's assemblies (about 1,400 particles) two threads ran 1.2-1.4 times as fast as one, in a periodic cell 1.0 (discs) to 1.4 (hexagons); for many runs, run more runs at once instead (--jobs): a batch lends the cores its finished runs leave idle to the runs still going (docs/benchmarks.md, \"Particles numbered along space\" and \"Periodic-cell specimens numbered along space\")"),
     "solver.velocity_iterations": ("", "box2d: b2World::Step's velocity iterations (an error with dem)"),
     "solver.position_iterations": ("", "box2d: b2World::Step's position iterations (an error with dem)"),
     "output": ("", "what is measured and written"),
