@@ -2,7 +2,6 @@
 // images included, then consolidated in the cell by the isotropic servos.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -10,6 +9,7 @@
 #include "grainlab/periodic_cell.hpp"
 #include "grainlab/specimen.hpp"
 #include "grainlab/world.hpp"
+#include "neighbour_index_gaps.hpp"
 #include "periodic_stages.hpp"
 
 namespace grainlab {
@@ -70,10 +70,6 @@ TEST(PeriodicSpecimen, SameSeedSameSpecimenOtherSeedAnother) {
   EXPECT_NE(a.particles[0].position, c.particles[0].position);
 }
 
-// Preparation as the paper's: compaction without friction to a dense state, by the cell's
-// isotropic servos at p. The specimen ends at p and dense: frictionless equal discs pack
-// between random close packing (about 0.82-0.84 in 2D) and the hexagonal 0.907, which they
-// partly reach by ordering (overlaps at p = 100 kPa add only ~p/k_n = 1e-3).
 // Numbered along space, as the ring's specimens are (specimen_order.hpp): in bands two mean
 // spacings s = L/√N tall across a cell of side L, each holding about 2√N particles. A particle's
 // nearest neighbour (measured straight, not across the edges) lies in its own band or the next,
@@ -85,26 +81,17 @@ TEST(PeriodicSpecimen, NeighboursInSpaceAreNeighboursInIndex) {
     const CellSpecimen s = generateCellSpecimen(recipe, 5);
     const size_t n = s.particles.size();
     ASSERT_EQ(n, 1000u);
-    std::vector<double> gaps;
-    for (size_t i = 0; i < n; ++i) {
-      size_t nearest = i;
-      double best = 1e300;
-      for (size_t j = 0; j < n; ++j) {
-        const double d = (s.particles[j].position - s.particles[i].position).squaredNorm();
-        if (j != i && d < best) {
-          best = d;
-          nearest = j;
-        }
-      }
-      gaps.push_back(std::abs(static_cast<double>(nearest) - static_cast<double>(i)));
-    }
-    std::sort(gaps.begin(), gaps.end());
+    const std::vector<double> gaps = test::sortedNeighbourIndexGaps(s.particles);
     const double twoBands = 4 * std::sqrt(static_cast<double>(n));
     EXPECT_LT(gaps[n / 2], twoBands);
     EXPECT_LT(gaps[n * 9 / 10], twoBands);
   }
 }
 
+// Preparation as the paper's: compaction without friction to a dense state, by the cell's
+// isotropic servos at p. The specimen ends at p and dense: frictionless equal discs pack
+// between random close packing (about 0.82-0.84 in 2D) and the hexagonal 0.907, which they
+// partly reach by ordering (overlaps at p = 100 kPa add only ~p/k_n = 1e-3).
 TEST(PeriodicSpecimen, ConsolidatedInTheCellToP) {
   const CellSpecimen s = generateCellSpecimen(discRecipe(), 3);
   Material m;

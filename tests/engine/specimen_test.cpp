@@ -12,6 +12,7 @@
 
 #include "grainlab/errors.hpp"
 #include "grainlab/specimen.hpp"
+#include "neighbour_index_gaps.hpp"
 // Private to the engine, reached by path: the grading solve and the ring condition are the
 // generator's own functions, and this test is theirs too.
 #include "../../engine/src/specimen_grading.hpp"
@@ -318,20 +319,7 @@ TEST(SpecimenNumbering, NeighboursInSpaceAreNeighboursInIndex) {
     const auto spec = specimenOf(s);
     const size_t n = spec.size();
     ASSERT_GT(n, 500u);
-    std::vector<double> gaps;
-    for (size_t i = 0; i < n; ++i) {
-      size_t nearest = i;
-      double best = 1e300;
-      for (size_t j = 0; j < n; ++j) {
-        const double d = (spec[j].position - spec[i].position).squaredNorm();
-        if (j != i && d < best) {
-          best = d;
-          nearest = j;
-        }
-      }
-      gaps.push_back(std::abs(static_cast<double>(nearest) - static_cast<double>(i)));
-    }
-    std::sort(gaps.begin(), gaps.end());
+    const std::vector<double> gaps = test::sortedNeighbourIndexGaps(spec);
     const double twoBands = 8 * std::sqrt(n / kPi);
     EXPECT_LT(gaps[n / 2], twoBands) << n << " particles";
     EXPECT_LT(gaps[n * 9 / 10], twoBands) << n << " particles";
