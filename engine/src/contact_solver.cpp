@@ -94,6 +94,7 @@ void ContactSolver::setPool(WorkerPool* pool) {
   writeBackWideState();  // the disc batch is planned per thread: its state goes back to the list first
   pool_ = pool;
   discBatchStale_ = true;
+  faceSlots_.markStale();  // the slots are laid out per thread
   deferredSlotsStale_ = true;
 }
 
@@ -235,7 +236,8 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
     }
     for (int e = 0; e < n; ++e) force(scratch[e].pair, scratch[e].contact);
   } else if (widePolygons_) {
-    forEachTouchingBatched<kPeriodic>(begin, end, force, apart);
+    if constexpr (kPeriodic) forEachTouchingInCell(begin, end, force, apart);
+    else forEachTouchingKept(begin, end, force, apart);
   } else {
     TouchingShapes* scratch = touchingShapes_.data() + begin;
     for (int k = begin; k < end; ++k) {
@@ -259,32 +261,123 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
   }
 }
 
-// The wide path's forEachTouching in a scene with polygons: the polygon pairs whose kept
-// features are a face against an edge are measured in a batch (polygon_face_batch.hpp), to
-// measurePolygons' bits; every other pair as pairGeometry measures it. Outside a periodic cell
-// the batch applies the law too (to contactForce's bits) and hands on each pair's force
-// (PolygonFaceForce); in a cell the law is the scalar one. The same calls in the same order as
-// forEachTouching, so the same bits.
-template <bool kPeriodic, class Force, class Apart>
-void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Apart&& apart) {
-  PairState* pairs = neighbors_.pairs().data();
+// The wide path's first pass over pair k: true where its kept features are a face against an
+// edge (searched again if they no longer hold), with what the batch needs of it in `face`;
+// otherwise its contact is written to the batch (the scalar narrow phase's answer for a pair
+// with a disc or a wall at an end, no overlap for one that does not touch).
+template <bool kPeriodic>
+[[gnu::always_inline]] inline bool ContactSolver::decideWidePair(int k, WideFacePair& face) {
+  const PairState& p = neighbors_.pairs()[static_cast<size_t>(k)];
+  CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
+  const ShapeKind* shape = particles_.shape.data();
+  const int i = p.i, j = p.j;
+  Vec2 shift = Vec2::Zero();
+  if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
+  if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
+    polygonBatch_.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr, SlackGuards::FeatureChoices);
+    return false;
+  }
   const Vec2* x = particles_.position.data();
   const double* radius = particles_.boundingRadius.data();
-  const ShapeKind* shape = particles_.shape.data();
-  const double* cosA = particles_.cosAngle.data();
-  const double* sinA = particles_.sinAngle.data();
-  const int* shapeIndex = particles_.shapeIndex.data();
+  const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];
+  const double reach = radius[i] + radius[j];
+  if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
+    cache.kind = CachedContact::Kind::None;
+    polygonBatch_.contact(k).overlap = -1;
+    return false;
+  }
+  face.i = i;
+  face.j = j;
+  face.reach = reach;
+  face.pi = {x[i], particles_.cosAngle[i], particles_.sinAngle[i]};
+  face.pj = {xj, particles_.cosAngle[j], particles_.sinAngle[j]};
+  face.si = particles_.shapeIndex[i];
+  face.sj = particles_.shapeIndex[j];
+  if (polygonCollider_->keepPolygonFeatures(face.si, face.pi, face.sj, face.pj, cache)) return true;
+  polygonBatch_.contact(k).overlap = -1;
+  return false;
+}
+
+// The wide path with polygons outside a periodic cell. Face-against-edge pairs keep their
+// slots from step to step (polygon_face_slots.hpp): the hold kernel tests every kept slot at
+// once, and the first pass (decideWidePair) runs only for the slots that fail and for the pairs
+// not in a slot. The batch measures the slots and applies the law (to contactForce's bits);
+// the forces follow in pair order, every other pair's from its contact. The same decisions,
+// measures and calls in the same order as forEachTouching, so the same bits.
+template <class Force, class Apart>
+void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart&& apart) {
+  PairState* pairs = neighbors_.pairs().data();
   PolygonFaceBatch& batch = polygonBatch_;
-  // A pair measured into its contact (by the scalar code or the batch's measure): its force, or apart.
-  auto forceFromContact = [&](int k) {
+  PolygonFaceSlots& slots = faceSlots_;
+  PolygonFaceSlots::Range& range = slots.range(begin);
+  const PolygonCollider& collider = *polygonCollider_;
+  auto fill = [&](int slot, int k, const WideFacePair& face) {
+    slots.fill(batch, slot, k, polygonCache_[static_cast<size_t>(k)], face.i, face.j, face.reach, face.si, face.pi,
+               face.sj, face.pj, collider);
+  };
+  // The kept slots: their poses, and which no longer hold.
+  std::int32_t* failed = slots.failed(range);
+  const int failures = holdPolygonFaceSlots(
+      slots.holdInput(batch, range, particles_.position.data()->data(), particles_.cosAngle.data(),
+                      particles_.sinAngle.data()),
+      range.faces, failed);
+  // The other pairs; those now a face against an edge take a slot.
+  int* others = slots.others(range);
+  int kept = 0;
+  for (int o = 0; o < range.others; ++o) {
+    const int k = others[o];
+    WideFacePair face;
+    if (decideWidePair<false>(k, face)) {
+      fill(range.begin + range.faces++, k, face);
+      continue;
+    }
+    others[kept++] = k;
+  }
+  range.others = kept;
+  // The slots that failed, from the last (a removed slot takes the range's last one, which has
+  // then been decided already).
+  for (int f = failures - 1; f >= 0; --f) {
+    const int slot = range.begin + failed[f];
+    const int k = batch.pairOf(slot);
+    WideFacePair face;
+    if (decideWidePair<false>(k, face)) {
+      fill(slot, k, face);
+      continue;
+    }
+    slots.remove(batch, range, slot);
+    others[range.others++] = k;
+  }
+  batch.measureForces(collider, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(), pairs,
+                      range.begin, range.faces);
+  for (int k = begin; k < end; ++k) {
+    if (const int s = slots.slotOf(k); s >= 0) {
+      if (!batch.touches(s)) {
+        clearContact(pairs[k]);
+        apart(k);
+        continue;
+      }
+      force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
+      continue;
+    }
     const ContactGeometry& g = batch.contact(k);
     if (g.overlap <= 0) {
       clearContact(pairs[k]);
       apart(k);
-      return;
+      continue;
     }
     force(k, g);
-  };
+  }
+}
+
+// The wide path's forEachTouching in a periodic cell: the polygon pairs whose kept features
+// are a face against an edge are measured in a batch (polygon_face_batch.hpp), to
+// measurePolygons' bits; every other pair as pairGeometry measures it. The law is the scalar
+// one (the batch knows no images). The same calls in the same order as forEachTouching, so the
+// same bits.
+template <class Force, class Apart>
+void ContactSolver::forEachTouchingInCell(int begin, int end, Force&& force, Apart&& apart) {
+  PairState* pairs = neighbors_.pairs().data();
+  PolygonFaceBatch& batch = polygonBatch_;
   // In chunks, so that a chunk's shape records (fetched ahead by add()) and contacts are still
   // in cache when the kernel and the forces read them.
   constexpr int kChunk = 128;
@@ -292,52 +385,21 @@ void ContactSolver::forEachTouchingBatched(int begin, int end, Force&& force, Ap
     const int last = std::min(end, first + kChunk);
     int slot = first;  // this chunk's slots
     for (int k = first; k < last; ++k) {
-      const PairState& p = pairs[k];
-      CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
-      const int i = p.i, j = p.j;
-      Vec2 shift = Vec2::Zero();
-      if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
-      if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
-        batch.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr, SlackGuards::FeatureChoices);
-        continue;
-      }
-      const Vec2 xj = kPeriodic ? Vec2(x[j] + shift) : x[j];
-      const double reach = radius[i] + radius[j];
-      if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
-        cache.kind = CachedContact::Kind::None;
-        batch.contact(k).overlap = -1;
-        continue;
-      }
-      const Pose pi{x[i], cosA[i], sinA[i]}, pj{xj, cosA[j], sinA[j]};
-      const int si = shapeIndex[i], sj = shapeIndex[j];
-      if (polygonCollider_->keepPolygonFeatures(si, pi, sj, pj, cache)) {
-        if constexpr (!kPeriodic) batch.setParticles(slot, i, j);
-        batch.add(slot++, k, cache, si, pi, sj, pj, *polygonCollider_);
-      } else {
-        batch.contact(k).overlap = -1;
-      }
-    }
-    if constexpr (!kPeriodic) {
-      batch.measureForces(*polygonCollider_, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(),
-                          pairs, first, slot - first);
-      int next = first;  // the chunk's slots hold its batched pairs in pair order
-      for (int k = first; k < last; ++k) {
-        if (next < slot && batch.pairOf(next) == k) {
-          const int s = next++;
-          if (!batch.touches(s)) {
-            clearContact(pairs[k]);
-            apart(k);
-            continue;
-          }
-          force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
-          continue;
-        }
-        forceFromContact(k);
-      }
-      continue;
+      WideFacePair face;
+      if (!decideWidePair<true>(k, face)) continue;
+      batch.add(slot++, k, polygonCache_[static_cast<size_t>(k)], face.si, face.pi, face.sj, face.pj,
+                *polygonCollider_);
     }
     batch.measure(*polygonCollider_, first, slot - first);
-    for (int k = first; k < last; ++k) forceFromContact(k);
+    for (int k = first; k < last; ++k) {
+      const ContactGeometry& g = batch.contact(k);
+      if (g.overlap <= 0) {
+        clearContact(pairs[k]);
+        apart(k);
+        continue;
+      }
+      force(k, g);
+    }
   }
 }
 
@@ -354,6 +416,14 @@ void ContactSolver::pairForces(const Law& law, double dt) {
     deferredSlotsStale_ = false;
   }
   std::vector<PairState>& pairs = neighbors_.pairs();
+  if constexpr (!kDiscsOnly && !kPeriodic) {
+    if (widePolygons_ && faceSlots_.stale()) {
+      const int slices = pool_ ? pool_->threads() : 1;
+      std::vector<int> begins(static_cast<size_t>(slices));
+      for (int t = 0; t < slices; ++t) begins[static_cast<size_t>(t)] = WorkerPool::sliceBegin(static_cast<int>(pairs.size()), t, slices);
+      faceSlots_.reset(static_cast<int>(pairs.size()), begins);
+    }
+  }
   if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());
   else touchingShapes_.resize(pairs.size());
   Vec2* f = particles_.force.data();
@@ -584,6 +654,9 @@ void ContactSolver::computeForces(double dt, bool moved) {
                                                     particles_.walls, skin_, moved);
   const bool polygons = !particles_.polygons.empty();
   widePolygons_ = polygons && simdPath() == SimdPath::Wide;
+  // The kept slots follow the pair list and the features: a rebuild or a step on the
+  // baseline path (which searches with other guards) drops them.
+  if (rebuilt || !widePolygons_) faceSlots_.markStale();
   if (widePolygons_) {
     polygonBatch_.resize(neighbors_.pairs().size());
     polygonLaw_ = {material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
@@ -705,6 +778,7 @@ void ContactSolver::persist(StateArchive& a) {
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     deferredSlotsStale_ = true;  // the slots follow the pair list
+    faceSlots_.markStale();      // and so do the kept face slots
     if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
     discBatchStale_ = true;
   }

@@ -12,6 +12,7 @@
 #include "contact_geometry.hpp"
 #include "polygon_collider.hpp"
 #include "polygon_face_kernel.hpp"
+#include "polygon_hold_kernel.hpp"
 
 namespace grainlab {
 
@@ -73,6 +74,34 @@ class PolygonFaceBatch {
   void setParticles(int slot, int i, int j) {
     i_[static_cast<size_t>(slot)] = i;
     j_[static_cast<size_t>(slot)] = j;
+  }
+
+  /// Moves slot `from` into `to`: its pair, particles, features and poses (not its answers).
+  void moveSlot(int from, int to) {
+    const auto f = static_cast<size_t>(from), t = static_cast<size_t>(to);
+    for (std::vector<double>* v : {&refX_, &refY_, &refC_, &refS_, &incX_, &incY_, &incC_, &incS_, &normalSign_}) {
+      (*v)[t] = (*v)[f];
+    }
+    for (std::vector<std::int64_t>* v : {&face_, &edge_, &i_, &j_}) (*v)[t] = (*v)[f];
+    pair_[t] = pair_[f];
+  }
+  /// The hold kernel's view of the slots from `begin` on: their particles, the normal's sign,
+  /// and where their poses go (PolygonFaceSlots fills in the rest).
+  PolygonHoldInput holdInput(int begin) {
+    const auto s = static_cast<size_t>(begin);
+    PolygonHoldInput in{};
+    in.i = i_.data() + s;
+    in.j = j_.data() + s;
+    in.normalSign = normalSign_.data() + s;
+    in.refX = refX_.data() + s;
+    in.refY = refY_.data() + s;
+    in.refC = refC_.data() + s;
+    in.refS = refS_.data() + s;
+    in.incX = incX_.data() + s;
+    in.incY = incY_.data() + s;
+    in.incC = incC_.data() + s;
+    in.incS = incS_.data() + s;
+    return in;
   }
 
   /// Measures slots [begin, begin + count) into their pairs' contacts.
