@@ -94,7 +94,7 @@ void ContactSolver::setPool(WorkerPool* pool) {
   writeBackWideState();  // the disc batch is planned per thread: its state goes back to the list first
   pool_ = pool;
   discBatchStale_ = true;
-  faceSlots_.markStale();  // the slots are laid out per thread
+  pairSlots_.markStale();  // the slots are laid out per thread
   deferredSlotsStale_ = true;
 }
 
@@ -261,12 +261,13 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
   }
 }
 
-// The wide path's first pass over pair k: true where its kept features are a face against an
-// edge (searched again if they no longer hold), with what the batch needs of it in `face`;
-// otherwise its contact is written to the batch (the scalar narrow phase's answer for a pair
-// with a disc or a wall at an end, no overlap for one that does not touch).
+// The wide path's first pass over pair k: Face where its kept features are a face against an
+// edge (searched again if they no longer hold), with what the batch needs of it in `face`.
+// Otherwise its contact is written to the batch (the scalar narrow phase's answer for a pair
+// with a disc or a wall at an end, no overlap for one that does not touch), and the answer is
+// Apart where a polygon pair's features say so (`face` then holds the pair too), else Other.
 template <bool kPeriodic>
-[[gnu::always_inline]] inline bool ContactSolver::decideWidePair(int k, WideFacePair& face) {
+[[gnu::always_inline]] inline ContactSolver::WideAnswer ContactSolver::decideWidePair(int k, WideFacePair& face) {
   const PairState& p = neighbors_.pairs()[static_cast<size_t>(k)];
   CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
   const ShapeKind* shape = particles_.shape.data();
@@ -275,7 +276,7 @@ template <bool kPeriodic>
   if constexpr (kPeriodic) shift = imageShift(static_cast<size_t>(k));
   if (j < 0 || shape[i] == ShapeKind::Disc || shape[j] == ShapeKind::Disc) {
     polygonBatch_.contact(k) = pairGeometry(p, &cache, kPeriodic ? &shift : nullptr, SlackGuards::FeatureChoices);
-    return false;
+    return WideAnswer::Other;
   }
   const Vec2* x = particles_.position.data();
   const double* radius = particles_.boundingRadius.data();
@@ -284,7 +285,7 @@ template <bool kPeriodic>
   if ((xj - x[i]).squaredNorm() >= reach * reach) {  // bounding circles apart
     cache.kind = CachedContact::Kind::None;
     polygonBatch_.contact(k).overlap = -1;
-    return false;
+    return WideAnswer::Other;
   }
   face.i = i;
   face.j = j;
@@ -293,79 +294,101 @@ template <bool kPeriodic>
   face.pj = {xj, particles_.cosAngle[j], particles_.sinAngle[j]};
   face.si = particles_.shapeIndex[i];
   face.sj = particles_.shapeIndex[j];
-  if (polygonCollider_->keepPolygonFeatures(face.si, face.pi, face.sj, face.pj, cache)) return true;
+  if (polygonCollider_->keepPolygonFeatures(face.si, face.pi, face.sj, face.pj, cache)) return WideAnswer::Face;
   polygonBatch_.contact(k).overlap = -1;
-  return false;
+  return WideAnswer::Apart;
 }
 
-// The wide path with polygons outside a periodic cell. Face-against-edge pairs keep their
-// slots from step to step (polygon_face_slots.hpp): the hold kernel tests every kept slot at
-// once, and the first pass (decideWidePair) runs only for the slots that fail and for the pairs
-// not in a slot. The batch measures the slots and applies the law (to contactForce's bits);
-// the forces follow in pair order, every other pair's from its contact. The same decisions,
-// measures and calls in the same order as forEachTouching, so the same bits.
+// The wide path with polygons outside a periodic cell. Polygon pairs keep their slots from
+// step to step while their features say the same (polygon_pair_slots.hpp): the hold kernel
+// tests every kept slot at once, and the first pass (decideWidePair) runs only for the slots
+// that fail and for the pairs in no slot. The batch measures the face slots and applies the
+// law (to contactForce's bits); the forces follow in pair order, every other pair's from its
+// contact. The same decisions, measures and calls in the same order as forEachTouching, so the
+// same bits.
 template <class Force, class Apart>
 void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart&& apart) {
   PairState* pairs = neighbors_.pairs().data();
   PolygonFaceBatch& batch = polygonBatch_;
-  PolygonFaceSlots& slots = faceSlots_;
-  PolygonFaceSlots::Range& range = slots.range(begin);
+  PolygonPairSlots& slots = pairSlots_;
+  PolygonPairSlots::Range& range = slots.range(begin, end);
   const PolygonCollider& collider = *polygonCollider_;
-  auto fill = [&](int slot, int k, const WideFacePair& face) {
-    slots.fill(batch, slot, k, polygonCache_[static_cast<size_t>(k)], face.i, face.j, face.reach, face.si, face.pi,
-               face.sj, face.pj, collider);
+  // A pair just decided: into a slot of its kind (`slot`, or the range's next), or the others.
+  auto place = [&](int k, WideAnswer answer, const WideFacePair& face, int slot) {
+    const CachedContact& c = polygonCache_[static_cast<size_t>(k)];
+    if (answer == WideAnswer::Face) {
+      slots.fillFace(batch, slot >= 0 ? slot : range.begin + range.faces++, k, c, face.i, face.j, face.reach,
+                     face.si, face.pi, face.sj, face.pj, collider);
+    } else if (answer == WideAnswer::Apart) {
+      slots.fillApart(slot >= 0 ? slot : range.begin + range.aparts++, k, c, face.i, face.j, face.reach);
+    }
   };
-  // The kept slots: their poses, and which no longer hold.
-  std::int32_t* failed = slots.failed(range);
-  const int failures = holdPolygonFaceSlots(
-      slots.holdInput(batch, range, particles_.position.data()->data(), particles_.cosAngle.data(),
-                      particles_.sinAngle.data()),
-      range.faces, failed);
-  // The other pairs; those now a face against an edge take a slot.
+  // The kept slots: the face slots' poses, and which slots no longer hold.
+  const PolygonHoldInput::Particles now{particles_.position.data()->data(), particles_.cosAngle.data(),
+                                        particles_.sinAngle.data()};
+  std::int32_t* failedFaces = slots.failedFaces(range);
+  std::int32_t* failedAparts = slots.failedAparts(range);
+  const int faceFailures = holdPolygonSlots(slots.faceHoldInput(batch, range, now), range.faces, failedFaces);
+  const int apartFailures = holdPolygonSlots(slots.apartHoldInput(range, now), range.aparts, failedAparts);
+  // The other pairs; those now a face against an edge or kept apart take a slot.
   int* others = slots.others(range);
-  int kept = 0;
+  int stay = 0;
   for (int o = 0; o < range.others; ++o) {
     const int k = others[o];
     WideFacePair face;
-    if (decideWidePair<false>(k, face)) {
-      fill(range.begin + range.faces++, k, face);
+    const WideAnswer answer = decideWidePair<false>(k, face);
+    if (answer == WideAnswer::Other) {
+      others[stay++] = k;
       continue;
     }
-    others[kept++] = k;
+    place(k, answer, face, -1);
   }
-  range.others = kept;
-  // The slots that failed, from the last (a removed slot takes the range's last one, which has
-  // then been decided already).
-  for (int f = failures - 1; f >= 0; --f) {
-    const int slot = range.begin + failed[f];
+  range.others = stay;
+  // The slots that failed, each kind from its last (a removed slot takes the range's last one
+  // of its kind, which has then been decided already): each pair is decided again, and keeps
+  // its slot if its answer is the same kind.
+  for (int f = apartFailures - 1; f >= 0; --f) {
+    const int slot = range.begin + failedAparts[f];
+    const int k = slots.apartPair(slot);
+    WideFacePair face;
+    const WideAnswer answer = decideWidePair<false>(k, face);
+    if (answer == WideAnswer::Apart) {
+      place(k, answer, face, slot);
+      continue;
+    }
+    slots.removeApart(range, slot);
+    if (answer == WideAnswer::Other) others[range.others++] = k;
+    else place(k, answer, face, -1);
+  }
+  for (int f = faceFailures - 1; f >= 0; --f) {
+    const int slot = range.begin + failedFaces[f];
     const int k = batch.pairOf(slot);
     WideFacePair face;
-    if (decideWidePair<false>(k, face)) {
-      fill(slot, k, face);
+    const WideAnswer answer = decideWidePair<false>(k, face);
+    if (answer == WideAnswer::Face) {
+      place(k, answer, face, slot);
       continue;
     }
-    slots.remove(batch, range, slot);
-    others[range.others++] = k;
+    slots.removeFace(batch, range, slot);
+    if (answer == WideAnswer::Other) others[range.others++] = k;
+    else place(k, answer, face, -1);
   }
   batch.measureForces(collider, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(), pairs,
                       range.begin, range.faces);
   for (int k = begin; k < end; ++k) {
-    if (const int s = slots.slotOf(k); s >= 0) {
-      if (!batch.touches(s)) {
-        clearContact(pairs[k]);
-        apart(k);
-        continue;
-      }
+    const int s = slots.slotOf(k);
+    if (s >= 0 && batch.touches(s)) {
       force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
       continue;
     }
-    const ContactGeometry& g = batch.contact(k);
-    if (g.overlap <= 0) {
-      clearContact(pairs[k]);
-      apart(k);
-      continue;
+    if (s == PolygonPairSlots::kOther) {
+      if (const ContactGeometry& g = batch.contact(k); g.overlap > 0) {
+        force(k, g);
+        continue;
+      }
     }
-    force(k, g);
+    clearContact(pairs[k]);
+    apart(k);
   }
 }
 
@@ -386,7 +409,7 @@ void ContactSolver::forEachTouchingInCell(int begin, int end, Force&& force, Apa
     int slot = first;  // this chunk's slots
     for (int k = first; k < last; ++k) {
       WideFacePair face;
-      if (!decideWidePair<true>(k, face)) continue;
+      if (decideWidePair<true>(k, face) != WideAnswer::Face) continue;
       batch.add(slot++, k, polygonCache_[static_cast<size_t>(k)], face.si, face.pi, face.sj, face.pj,
                 *polygonCollider_);
     }
@@ -417,11 +440,11 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   }
   std::vector<PairState>& pairs = neighbors_.pairs();
   if constexpr (!kDiscsOnly && !kPeriodic) {
-    if (widePolygons_ && faceSlots_.stale()) {
+    if (widePolygons_ && pairSlots_.stale()) {
       const int slices = pool_ ? pool_->threads() : 1;
       std::vector<int> begins(static_cast<size_t>(slices));
       for (int t = 0; t < slices; ++t) begins[static_cast<size_t>(t)] = WorkerPool::sliceBegin(static_cast<int>(pairs.size()), t, slices);
-      faceSlots_.reset(static_cast<int>(pairs.size()), begins);
+      pairSlots_.reset(static_cast<int>(pairs.size()), begins);
     }
   }
   if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());
@@ -656,7 +679,7 @@ void ContactSolver::computeForces(double dt, bool moved) {
   widePolygons_ = polygons && simdPath() == SimdPath::Wide;
   // The kept slots follow the pair list and the features: a rebuild or a step on the
   // baseline path (which searches with other guards) drops them.
-  if (rebuilt || !widePolygons_) faceSlots_.markStale();
+  if (rebuilt || !widePolygons_) pairSlots_.markStale();
   if (widePolygons_) {
     polygonBatch_.resize(neighbors_.pairs().size());
     polygonLaw_ = {material_.normalStiffness, material_.tangentialStiffness, material_.friction, dt,
@@ -778,7 +801,7 @@ void ContactSolver::persist(StateArchive& a) {
     }
     if (polygonCollider_) polygonCollider_->setFeatureSearches(profile_.featureSearches);
     deferredSlotsStale_ = true;  // the slots follow the pair list
-    faceSlots_.markStale();      // and so do the kept face slots
+    pairSlots_.markStale();      // and so do the kept pair slots
     if (material_.rollingFriction > 0) assignRollingPairs();  // and so do the rolling constants
     discBatchStale_ = true;
   }

@@ -23,7 +23,7 @@
 #include "neighbor_list.hpp"
 #include "polygon_collider.hpp"
 #include "polygon_face_batch.hpp"
-#include "polygon_face_slots.hpp"
+#include "polygon_pair_slots.hpp"
 
 namespace grainlab {
 
@@ -95,15 +95,16 @@ class ContactSolver {
   void widePairForces(const Law& law, double dt);
   template <bool kDiscsOnly, bool kPeriodic, class Force, class Apart>
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
-  // The wide path with polygons: a pair's first pass (what a face-against-edge pair's slot
-  // needs), the kept slots outside a periodic cell (polygon_face_slots.hpp), and a cell's batch.
+  // The wide path with polygons: a pair's first pass (its answer, and what a slot needs), the
+  // kept slots outside a periodic cell (polygon_pair_slots.hpp), and a cell's batch.
   struct WideFacePair {
     int i = 0, j = 0, si = 0, sj = 0;
     Pose pi, pj;
     double reach = 0;
   };
+  enum class WideAnswer { Face, Apart, Other };
   template <bool kPeriodic>
-  bool decideWidePair(int k, WideFacePair& face);
+  WideAnswer decideWidePair(int k, WideFacePair& face);
   template <class Force, class Apart>
   void forEachTouchingKept(int begin, int end, Force&& force, Apart&& apart);
   template <class Force, class Apart>
@@ -158,7 +159,7 @@ class ContactSolver {
   mutable bool wideStateAhead_ = false;
   // The wide path in a scene with polygons: face-against-edge pairs measured in batches.
   PolygonFaceBatch polygonBatch_;
-  PolygonFaceSlots faceSlots_;  // outside a periodic cell: which pairs keep their slots
+  PolygonPairSlots pairSlots_;  // outside a periodic cell: which pairs keep their slots
   // The batch holds every touching pair's contact as the last force pass measured it, at the
   // particles' positions now (computeForces is a step's last move; a load or a new layout
   // clears it): the servos' stress reads them instead of measuring again.

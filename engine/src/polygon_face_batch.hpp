@@ -85,13 +85,9 @@ class PolygonFaceBatch {
     for (std::vector<std::int64_t>* v : {&face_, &edge_, &i_, &j_}) (*v)[t] = (*v)[f];
     pair_[t] = pair_[f];
   }
-  /// The hold kernel's view of the slots from `begin` on: their particles, the normal's sign,
-  /// and where their poses go (PolygonFaceSlots fills in the rest).
-  PolygonHoldInput holdInput(int begin) {
+  /// Where the hold kernel writes the poses of the slots from `begin` on, and their normals' signs.
+  void addPoses(int begin, PolygonHoldInput& in) {
     const auto s = static_cast<size_t>(begin);
-    PolygonHoldInput in{};
-    in.i = i_.data() + s;
-    in.j = j_.data() + s;
     in.normalSign = normalSign_.data() + s;
     in.refX = refX_.data() + s;
     in.refY = refY_.data() + s;
@@ -101,7 +97,6 @@ class PolygonFaceBatch {
     in.incY = incY_.data() + s;
     in.incC = incC_.data() + s;
     in.incS = incS_.data() + s;
-    return in;
   }
 
   /// Measures slots [begin, begin + count) into their pairs' contacts.

@@ -1,5 +1,5 @@
 // Compiled once per instruction set Highway targets (foreach_target re-includes this file);
-// holdPolygonFaceSlots() dispatches at run time to the widest the CPU has.
+// holdPolygonSlots() dispatches at run time to the widest the CPU has.
 #include "polygon_hold_kernel.hpp"
 
 #include <cmath>
@@ -14,38 +14,40 @@ namespace {
 // One slot in scalar code: the first pass's two tests of a face pair (ContactSolver::decideWidePair's
 // bounding circles, relativeMotion against the slack), in their operations and order.
 inline bool holdsOne(const PolygonHoldInput& in, size_t s) {
-  const double* x = in.position;
+  const double* x = in.particles.position;
+  const double *cosAngle = in.particles.cosAngle, *sinAngle = in.particles.sinAngle;
   const auto i = static_cast<size_t>(in.i[s]), j = static_cast<size_t>(in.j[s]);
   const double dx = x[2 * j] - x[2 * i], dy = x[2 * j + 1] - x[2 * i + 1];
   const double reach = in.reach[s];
   if (dx * dx + dy * dy >= reach * reach) return false;
   const double mx = dx - in.offsetX[s], my = dy - in.offsetY[s];
   const double shift = std::abs(mx) + std::abs(my);
-  const double turn = std::abs(in.cosAngle[i] - in.ca[s]) + std::abs(in.sinAngle[i] - in.sa[s]) +
-                      std::abs(in.cosAngle[j] - in.cb[s]) + std::abs(in.sinAngle[j] - in.sb[s]);
+  const double turn = std::abs(cosAngle[i] - in.ca[s]) + std::abs(sinAngle[i] - in.sa[s]) +
+                      std::abs(cosAngle[j] - in.cb[s]) + std::abs(sinAngle[j] - in.sb[s]);
   return shift + (in.lever[s] + shift) * turn < in.slack[s];
 }
 
 inline void posesOne(const PolygonHoldInput& in, size_t s) {
-  const double* x = in.position;
+  const double* x = in.particles.position;
+  const double *cosAngle = in.particles.cosAngle, *sinAngle = in.particles.sinAngle;
   const auto i = static_cast<size_t>(in.i[s]), j = static_cast<size_t>(in.j[s]);
   const bool iIsRef = in.normalSign[s] > 0;
   const size_t r = iIsRef ? i : j, e = iIsRef ? j : i;
   in.refX[s] = x[2 * r];
   in.refY[s] = x[2 * r + 1];
-  in.refC[s] = in.cosAngle[r];
-  in.refS[s] = in.sinAngle[r];
+  in.refC[s] = cosAngle[r];
+  in.refS[s] = sinAngle[r];
   in.incX[s] = x[2 * e];
   in.incY[s] = x[2 * e + 1];
-  in.incC[s] = in.cosAngle[e];
-  in.incS[s] = in.sinAngle[e];
+  in.incC[s] = cosAngle[e];
+  in.incS[s] = sinAngle[e];
 }
 
 // Slots [from, count) one by one.
 inline int holdScalar(const PolygonHoldInput& in, size_t from, size_t count, std::int32_t* failed) {
   int n = 0;
   for (size_t s = from; s < count; ++s) {
-    posesOne(in, s);
+    if (in.refX) posesOne(in, s);
     if (!holdsOne(in, s)) failed[n++] = static_cast<std::int32_t>(s);
   }
   return n;
@@ -68,7 +70,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // Whole vectors of slots; the last part-vector one by one (no lane reads past the range:
 // another thread's slots follow it).
-int HoldSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
+template <bool kPoses>
+int HoldSlotsOf(const PolygonHoldInput& in, int count, std::int32_t* failed) {
   const hn::ScalableTag<double> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t lanes = hn::Lanes(d), n = static_cast<size_t>(count);
@@ -77,10 +80,11 @@ int HoldSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
   for (; s + lanes <= n; s += lanes) {
     const auto I = hn::LoadU(di, in.i + s), J = hn::LoadU(di, in.j + s);
     const auto I2 = hn::Add(I, I), J2 = hn::Add(J, J);
-    const auto xi = hn::GatherIndex(d, in.position, I2), yi = hn::GatherIndex(d, in.position + 1, I2);
-    const auto xj = hn::GatherIndex(d, in.position, J2), yj = hn::GatherIndex(d, in.position + 1, J2);
-    const auto ci = hn::GatherIndex(d, in.cosAngle, I), si = hn::GatherIndex(d, in.sinAngle, I);
-    const auto cj = hn::GatherIndex(d, in.cosAngle, J), sj = hn::GatherIndex(d, in.sinAngle, J);
+    const PolygonHoldInput::Particles& p = in.particles;
+    const auto xi = hn::GatherIndex(d, p.position, I2), yi = hn::GatherIndex(d, p.position + 1, I2);
+    const auto xj = hn::GatherIndex(d, p.position, J2), yj = hn::GatherIndex(d, p.position + 1, J2);
+    const auto ci = hn::GatherIndex(d, p.cosAngle, I), si = hn::GatherIndex(d, p.sinAngle, I);
+    const auto cj = hn::GatherIndex(d, p.cosAngle, J), sj = hn::GatherIndex(d, p.sinAngle, J);
     // (x_j − x_i)·(x_j − x_i) >= reach²: the bounding circles apart
     const auto dx = hn::Sub(xj, xi), dy = hn::Sub(yj, yi);
     const auto reach = hn::LoadU(d, in.reach + s);
@@ -95,15 +99,17 @@ int HoldSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
     const auto motion = hn::Add(shift, hn::Mul(hn::Add(hn::LoadU(d, in.lever + s), shift), turn));
     // Fails unless motion < slack (a NaN fails, as the scalar test does) and the circles meet.
     const auto holds = hn::AndNot(apart, hn::Lt(motion, hn::LoadU(d, in.slack + s)));
-    const auto iIsRef = hn::Gt(hn::LoadU(d, in.normalSign + s), hn::Zero(d));
-    hn::StoreU(hn::IfThenElse(iIsRef, xi, xj), d, in.refX + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, yi, yj), d, in.refY + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, ci, cj), d, in.refC + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, si, sj), d, in.refS + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, xj, xi), d, in.incX + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, yj, yi), d, in.incY + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, cj, ci), d, in.incC + s);
-    hn::StoreU(hn::IfThenElse(iIsRef, sj, si), d, in.incS + s);
+    if constexpr (kPoses) {
+      const auto iIsRef = hn::Gt(hn::LoadU(d, in.normalSign + s), hn::Zero(d));
+      hn::StoreU(hn::IfThenElse(iIsRef, xi, xj), d, in.refX + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, yi, yj), d, in.refY + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, ci, cj), d, in.refC + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, si, sj), d, in.refS + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, xj, xi), d, in.incX + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, yj, yi), d, in.incY + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, cj, ci), d, in.incC + s);
+      hn::StoreU(hn::IfThenElse(iIsRef, sj, si), d, in.incS + s);
+    }
     if (hn::AllTrue(d, holds)) continue;
     std::uint8_t bits[8] = {};
     hn::StoreMaskBits(d, hn::Not(holds), bits);
@@ -114,6 +120,10 @@ int HoldSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
   return nFailed + holdScalar(in, s, n, failed + nFailed);
 }
 
+int HoldSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
+  return in.refX ? HoldSlotsOf<true>(in, count, failed) : HoldSlotsOf<false>(in, count, failed);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace grainlab
 HWY_AFTER_NAMESPACE();
@@ -122,7 +132,7 @@ HWY_AFTER_NAMESPACE();
 namespace grainlab {
 HWY_EXPORT(HoldSlots);
 
-int holdPolygonFaceSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
+int holdPolygonSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
   return HWY_DYNAMIC_DISPATCH(HoldSlots)(in, count, failed);
 }
 
@@ -130,7 +140,7 @@ int holdPolygonFaceSlots(const PolygonHoldInput& in, int count, std::int32_t* fa
 #endif
 #else  // a build without the wide path: the same answers one slot at a time
 namespace grainlab {
-int holdPolygonFaceSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
+int holdPolygonSlots(const PolygonHoldInput& in, int count, std::int32_t* failed) {
   return holdScalar(in, 0, static_cast<size_t>(count), failed);
 }
 }  // namespace grainlab

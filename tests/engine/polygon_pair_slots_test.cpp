@@ -1,7 +1,7 @@
-// The wide path's kept face slots (polygon_face_slots.hpp, polygon_hold_kernel.hpp): the hold
-// kernel must answer as the first pass's scalar tests do, bit for bit, and a polygon run whose
-// face pairs keep their slots from step to step must give every bit of one whose pairs are all
-// decided again at every step: each on every instruction set this build compiled.
+// The wide path's kept polygon pair slots (polygon_pair_slots.hpp, polygon_hold_kernel.hpp):
+// the hold kernel must answer as the first pass's scalar tests do, bit for bit, and a polygon
+// run whose pairs keep their slots from step to step must give every bit of one whose pairs are
+// all decided again at every step: each on every instruction set this build compiled.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,16 +111,32 @@ TEST(PolygonHoldKernel, AnswersAsTheFirstPassDoes) {
     std::vector<double> out(8 * static_cast<size_t>(slots), -7.0);
     std::vector<std::int32_t> failed(slots, -1);
     std::vector<bool> gotFail(slots);
+    std::vector<bool> gotFailWithoutPoses(slots);
     for (const auto& [begin, count] : {std::pair{0, split}, std::pair{split, slots - split}}) {
       const auto b = static_cast<size_t>(begin);
+      PolygonHoldInput in{};
+      in.i = is.data() + b;
+      in.j = js.data() + b;
+      in.offsetX = offsetX.data() + b;
+      in.offsetY = offsetY.data() + b;
+      in.lever = lever.data() + b;
+      in.ca = ca.data() + b;
+      in.sa = sa.data() + b;
+      in.cb = cb.data() + b;
+      in.sb = sb.data() + b;
+      in.slack = slack.data() + b;
+      in.reach = reach.data() + b;
+      in.particles = {position.data(), cosAngle.data(), sinAngle.data()};
+      // Apart slots: no poses.
+      int n = holdPolygonSlots(in, count, failed.data() + b);
+      for (int f = 0; f < n; ++f) gotFailWithoutPoses[b + static_cast<size_t>(failed[b + static_cast<size_t>(f)])] = true;
+      // Face slots: their poses written too.
+      in.normalSign = sign.data() + b;
       double* columns[8];
       for (int c = 0; c < 8; ++c) columns[c] = out.data() + static_cast<size_t>(c) * slots + b;
-      const PolygonHoldInput in{is.data() + b, js.data() + b, sign.data() + b, offsetX.data() + b,
-                                offsetY.data() + b, lever.data() + b, ca.data() + b, sa.data() + b,
-                                cb.data() + b, sb.data() + b, slack.data() + b, reach.data() + b,
-                                position.data(), cosAngle.data(), sinAngle.data(), columns[0], columns[1],
-                                columns[2], columns[3], columns[4], columns[5], columns[6], columns[7]};
-      const int n = holdPolygonFaceSlots(in, count, failed.data() + b);
+      in.refX = columns[0], in.refY = columns[1], in.refC = columns[2], in.refS = columns[3];
+      in.incX = columns[4], in.incY = columns[5], in.incC = columns[6], in.incS = columns[7];
+      n = holdPolygonSlots(in, count, failed.data() + b);
       for (int f = 0; f < n; ++f) {
         if (f > 0) {
           EXPECT_LT(failed[b + static_cast<size_t>(f) - 1], failed[b + static_cast<size_t>(f)]) << target;
@@ -128,6 +144,7 @@ TEST(PolygonHoldKernel, AnswersAsTheFirstPassDoes) {
         gotFail[b + static_cast<size_t>(failed[b + static_cast<size_t>(f)])] = true;
       }
     }
+    EXPECT_EQ(gotFail, gotFailWithoutPoses) << target;
     int wrongAnswers = 0, wrongPoses = 0;
     for (int s = 0; s < slots; ++s) {
       wrongAnswers += gotFail[static_cast<size_t>(s)] != expectedFail[static_cast<size_t>(s)];
@@ -152,10 +169,10 @@ std::unique_ptr<World> makeWorld(const Scene& scene) {
 
 // A shuffled polygon pile released 8 % closer than its lattice under 50 g: it springs apart
 // and settles, so pairs come into and out of face contact, features are searched again and the
-// neighbour list is rebuilt. One world keeps its slots; in the other every pair is decided again
+// neighbour list is rebuilt. One world keeps its face and apart slots; in the other every pair is decided again
 // at every step (a change of thread count lays the slots out afresh, and the thread count
 // itself changes no bit: ThreadChange.BetweenStepsKeepsEveryBit). Every bit must agree.
-TEST(PolygonFaceSlots, KeptSlotsGiveTheBitsOfDecidingEveryPairEveryStep) {
+TEST(PolygonPairSlots, KeptSlotsGiveTheBitsOfDecidingEveryPairEveryStep) {
   if (!test::wideSimdBuilt()) GTEST_SKIP() << "this build has no wide path (GRAINLAB_SIMD=OFF)";
   Scene scene = pileScene(12, 12, true);
   std::mt19937_64 rng(3);
