@@ -381,8 +381,10 @@ void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart
       force(k, PolygonFaceForce{batch.force(s), batch.torqueI(s), batch.torqueJ(s)});
       continue;
     }
+    // Not `overlap > 0`: a NaN overlap goes on to the force, as forEachTouching's test lets
+    // it, so that the health check stops the run instead of the pair passing for apart.
     if (s == PolygonPairSlots::kOther) {
-      if (const ContactGeometry& g = batch.contact(k); g.overlap > 0) {
+      if (const ContactGeometry& g = batch.contact(k); !(g.overlap <= 0)) {
         force(k, g);
         continue;
       }
