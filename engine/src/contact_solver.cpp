@@ -262,12 +262,12 @@ inline void ContactSolver::forEachTouching(int begin, int end, Force&& force, Ap
 }
 
 // The wide path's first pass over pair k: Face where its kept features are a face against an
-// edge (searched again if they no longer hold), with what the batch needs of it in `face`.
+// edge (searched again if they no longer hold), with what the batch needs of it in `found`.
 // Otherwise its contact is written to the batch (the scalar narrow phase's answer for a pair
 // with a disc or a wall at an end, no overlap for one that does not touch), and the answer is
-// Apart where a polygon pair's features say so (`face` then holds the pair too), else Other.
+// Apart where a polygon pair's features say so (`found` then holds the pair too), else Other.
 template <bool kPeriodic>
-[[gnu::always_inline]] inline ContactSolver::WideAnswer ContactSolver::decideWidePair(int k, WideFacePair& face) {
+[[gnu::always_inline]] inline ContactSolver::WideAnswer ContactSolver::decideWidePair(int k, WidePolygonPair& found) {
   const PairState& p = neighbors_.pairs()[static_cast<size_t>(k)];
   CachedContact& cache = polygonCache_[static_cast<size_t>(k)];
   const ShapeKind* shape = particles_.shape.data();
@@ -287,14 +287,14 @@ template <bool kPeriodic>
     polygonBatch_.contact(k).overlap = -1;
     return WideAnswer::Other;
   }
-  face.i = i;
-  face.j = j;
-  face.reach = reach;
-  face.pi = {x[i], particles_.cosAngle[i], particles_.sinAngle[i]};
-  face.pj = {xj, particles_.cosAngle[j], particles_.sinAngle[j]};
-  face.si = particles_.shapeIndex[i];
-  face.sj = particles_.shapeIndex[j];
-  if (polygonCollider_->keepPolygonFeatures(face.si, face.pi, face.sj, face.pj, cache)) return WideAnswer::Face;
+  found.i = i;
+  found.j = j;
+  found.reach = reach;
+  found.pi = {x[i], particles_.cosAngle[i], particles_.sinAngle[i]};
+  found.pj = {xj, particles_.cosAngle[j], particles_.sinAngle[j]};
+  found.si = particles_.shapeIndex[i];
+  found.sj = particles_.shapeIndex[j];
+  if (polygonCollider_->keepPolygonFeatures(found.si, found.pi, found.sj, found.pj, cache)) return WideAnswer::Face;
   polygonBatch_.contact(k).overlap = -1;
   return WideAnswer::Apart;
 }
@@ -314,13 +314,13 @@ void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart
   PolygonPairSlots::Range& range = slots.range(begin, end);
   const PolygonCollider& collider = *polygonCollider_;
   // A pair just decided: into a slot of its kind (`slot`, or the range's next), or the others.
-  auto place = [&](int k, WideAnswer answer, const WideFacePair& face, int slot) {
+  auto place = [&](int k, WideAnswer answer, const WidePolygonPair& found, int slot) {
     const CachedContact& c = polygonCache_[static_cast<size_t>(k)];
     if (answer == WideAnswer::Face) {
-      slots.fillFace(batch, slot >= 0 ? slot : range.begin + range.faces++, k, c, face.i, face.j, face.reach,
-                     face.si, face.pi, face.sj, face.pj, collider);
+      slots.fillFace(batch, slot >= 0 ? slot : range.begin + range.faces++, k, c, found.i, found.j, found.reach,
+                     found.si, found.pi, found.sj, found.pj, collider);
     } else if (answer == WideAnswer::Apart) {
-      slots.fillApart(slot >= 0 ? slot : range.begin + range.aparts++, k, c, face.i, face.j, face.reach);
+      slots.fillApart(slot >= 0 ? slot : range.begin + range.aparts++, k, c, found.i, found.j, found.reach);
     }
   };
   // The kept slots: the face slots' poses, and which slots no longer hold.
@@ -335,13 +335,13 @@ void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart
   int stay = 0;
   for (int o = 0; o < range.others; ++o) {
     const int k = others[o];
-    WideFacePair face;
-    const WideAnswer answer = decideWidePair<false>(k, face);
+    WidePolygonPair found;
+    const WideAnswer answer = decideWidePair<false>(k, found);
     if (answer == WideAnswer::Other) {
       others[stay++] = k;
       continue;
     }
-    place(k, answer, face, -1);
+    place(k, answer, found, -1);
   }
   range.others = stay;
   // The slots that failed, each kind from its last (a removed slot takes the range's last one
@@ -350,28 +350,28 @@ void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart
   for (int f = apartFailures - 1; f >= 0; --f) {
     const int slot = range.begin + failedAparts[f];
     const int k = slots.apartPair(slot);
-    WideFacePair face;
-    const WideAnswer answer = decideWidePair<false>(k, face);
+    WidePolygonPair found;
+    const WideAnswer answer = decideWidePair<false>(k, found);
     if (answer == WideAnswer::Apart) {
-      place(k, answer, face, slot);
+      place(k, answer, found, slot);
       continue;
     }
     slots.removeApart(range, slot);
     if (answer == WideAnswer::Other) others[range.others++] = k;
-    else place(k, answer, face, -1);
+    else place(k, answer, found, -1);
   }
   for (int f = faceFailures - 1; f >= 0; --f) {
     const int slot = range.begin + failedFaces[f];
     const int k = batch.pairOf(slot);
-    WideFacePair face;
-    const WideAnswer answer = decideWidePair<false>(k, face);
+    WidePolygonPair found;
+    const WideAnswer answer = decideWidePair<false>(k, found);
     if (answer == WideAnswer::Face) {
-      place(k, answer, face, slot);
+      place(k, answer, found, slot);
       continue;
     }
     slots.removeFace(batch, range, slot);
     if (answer == WideAnswer::Other) others[range.others++] = k;
-    else place(k, answer, face, -1);
+    else place(k, answer, found, -1);
   }
   batch.measureForces(collider, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(), pairs,
                       range.begin, range.faces);
@@ -410,9 +410,9 @@ void ContactSolver::forEachTouchingInCell(int begin, int end, Force&& force, Apa
     const int last = std::min(end, first + kChunk);
     int slot = first;  // this chunk's slots
     for (int k = first; k < last; ++k) {
-      WideFacePair face;
-      if (decideWidePair<true>(k, face) != WideAnswer::Face) continue;
-      batch.add(slot++, k, polygonCache_[static_cast<size_t>(k)], face.si, face.pi, face.sj, face.pj,
+      WidePolygonPair found;
+      if (decideWidePair<true>(k, found) != WideAnswer::Face) continue;
+      batch.add(slot++, k, polygonCache_[static_cast<size_t>(k)], found.si, found.pi, found.sj, found.pj,
                 *polygonCollider_);
     }
     batch.measure(*polygonCollider_, first, slot - first);
@@ -443,10 +443,11 @@ void ContactSolver::pairForces(const Law& law, double dt) {
   std::vector<PairState>& pairs = neighbors_.pairs();
   if constexpr (!kDiscsOnly && !kPeriodic) {
     if (widePolygons_ && pairSlots_.stale()) {
-      const int slices = pool_ ? pool_->threads() : 1;
+      // One range of slots per thread's slice of the pairs, as parallelFor slices them.
+      const int slices = pool_ ? pool_->threads() : 1, count = static_cast<int>(pairs.size());
       std::vector<int> begins(static_cast<size_t>(slices));
-      for (int t = 0; t < slices; ++t) begins[static_cast<size_t>(t)] = WorkerPool::sliceBegin(static_cast<int>(pairs.size()), t, slices);
-      pairSlots_.reset(static_cast<int>(pairs.size()), begins);
+      for (int t = 0; t < slices; ++t) begins[static_cast<size_t>(t)] = WorkerPool::sliceBegin(count, t, slices);
+      pairSlots_.reset(count, begins);
     }
   }
   if constexpr (kDiscsOnly) touchingDiscs_.resize(pairs.size());

@@ -97,14 +97,14 @@ class ContactSolver {
   void forEachTouching(int begin, int end, Force&& force, Apart&& apart);
   // The wide path with polygons: a pair's first pass (its answer, and what a slot needs), the
   // kept slots outside a periodic cell (polygon_pair_slots.hpp), and a cell's batch.
-  struct WideFacePair {
+  struct WidePolygonPair {
     int i = 0, j = 0, si = 0, sj = 0;
     Pose pi, pj;
     double reach = 0;
   };
   enum class WideAnswer { Face, Apart, Other };
   template <bool kPeriodic>
-  WideAnswer decideWidePair(int k, WideFacePair& face);
+  WideAnswer decideWidePair(int k, WidePolygonPair& found);
   template <class Force, class Apart>
   void forEachTouchingKept(int begin, int end, Force&& force, Apart&& apart);
   template <class Force, class Apart>

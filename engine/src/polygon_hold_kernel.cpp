@@ -11,7 +11,7 @@
 namespace grainlab {
 namespace {
 
-// One slot in scalar code: the first pass's two tests of a face pair (ContactSolver::decideWidePair's
+// One slot in scalar code: the first pass's two tests of a polygon pair with kept features (decideWidePair's
 // bounding circles, relativeMotion against the slack), in their operations and order.
 inline bool holdsOne(const PolygonHoldInput& in, size_t s) {
   const double* x = in.particles.position;

@@ -129,7 +129,9 @@ TEST(PolygonHoldKernel, AnswersAsTheFirstPassDoes) {
       in.particles = {position.data(), cosAngle.data(), sinAngle.data()};
       // Apart slots: no poses.
       int n = holdPolygonSlots(in, count, failed.data() + b);
-      for (int f = 0; f < n; ++f) gotFailWithoutPoses[b + static_cast<size_t>(failed[b + static_cast<size_t>(f)])] = true;
+      for (int f = 0; f < n; ++f) {
+        gotFailWithoutPoses[b + static_cast<size_t>(failed[b + static_cast<size_t>(f)])] = true;
+      }
       // Face slots: their poses written too.
       in.normalSign = sign.data() + b;
       double* columns[8];
