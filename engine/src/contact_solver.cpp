@@ -346,32 +346,25 @@ void ContactSolver::forEachTouchingKept(int begin, int end, Force&& force, Apart
   range.others = stay;
   // The slots that failed, each kind from its last (a removed slot takes the range's last one
   // of its kind, which has then been decided already): each pair is decided again, and keeps
-  // its slot if its answer is the same kind.
-  for (int f = apartFailures - 1; f >= 0; --f) {
-    const int slot = range.begin + failedAparts[f];
-    const int k = slots.apartPair(slot);
+  // its slot if its answer is the same kind (`kind`); otherwise `leave` takes it out.
+  auto decideAgain = [&](int slot, int k, WideAnswer kind, auto&& leave) {
     WidePolygonPair found;
     const WideAnswer answer = decideWidePair<false>(k, found);
-    if (answer == WideAnswer::Apart) {
+    if (answer == kind) {
       place(k, answer, found, slot);
-      continue;
+      return;
     }
-    slots.removeApart(range, slot);
+    leave();
     if (answer == WideAnswer::Other) others[range.others++] = k;
     else place(k, answer, found, -1);
+  };
+  for (int f = apartFailures - 1; f >= 0; --f) {
+    const int slot = range.begin + failedAparts[f];
+    decideAgain(slot, slots.apartPair(slot), WideAnswer::Apart, [&] { slots.removeApart(range, slot); });
   }
   for (int f = faceFailures - 1; f >= 0; --f) {
     const int slot = range.begin + failedFaces[f];
-    const int k = batch.pairOf(slot);
-    WidePolygonPair found;
-    const WideAnswer answer = decideWidePair<false>(k, found);
-    if (answer == WideAnswer::Face) {
-      place(k, answer, found, slot);
-      continue;
-    }
-    slots.removeFace(batch, range, slot);
-    if (answer == WideAnswer::Other) others[range.others++] = k;
-    else place(k, answer, found, -1);
+    decideAgain(slot, batch.pairOf(slot), WideAnswer::Face, [&] { slots.removeFace(batch, range, slot); });
   }
   batch.measureForces(collider, polygonLaw_, particles_.velocity.data()->data(), particles_.spin.data(), pairs,
                       range.begin, range.faces);

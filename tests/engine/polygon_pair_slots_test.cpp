@@ -161,14 +161,6 @@ TEST(PolygonHoldKernel, AnswersAsTheFirstPassDoes) {
   });
 }
 
-std::unique_ptr<World> makeWorld(const Scene& scene) {
-  auto w = std::make_unique<World>(scene.material, WorldSettings{});
-  for (const ParticleSpec& p : scene.particles) w->addParticle(p);
-  for (const Wall& wall : scene.walls) w->addWall(wall);
-  w->setGravity(scene.gravity);
-  return w;
-}
-
 // A shuffled polygon pile released 8 % closer than its lattice under 50 g: it springs apart
 // and settles, so pairs come into and out of face contact, features are searched again and the
 // neighbour list is rebuilt. One world keeps its face and apart slots; in the other every pair is decided again
@@ -182,7 +174,7 @@ TEST(PolygonPairSlots, KeptSlotsGiveTheBitsOfDecidingEveryPairEveryStep) {
   for (ParticleSpec& p : scene.particles) p.position *= 0.92;
   scene.gravity *= 50;
   test::onEveryWideTarget([&](const std::string& target) {
-    const std::unique_ptr<World> kept = makeWorld(scene), decided = makeWorld(scene);
+    const std::unique_ptr<World> kept = test::worldOf(scene, {}), decided = test::worldOf(scene, {});
     for (int k = 0; k < 12000; ++k) {
       decided->setThreads(k % 2 + 1);
       kept->step();
