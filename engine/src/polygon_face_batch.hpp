@@ -1,8 +1,9 @@
 #pragma once
-// A polygon scene's face-against-edge contacts laid out for the wide path: each step, the pairs
-// whose kept features are a face against an edge (PolygonCollider::keepPolygonFeatures) are
-// gathered into structure-of-arrays slots and measured several per instruction
-// (polygon_face_kernel.hpp), to the bits of PolygonCollider::measurePolygons. Every pair has a
+// A polygon scene's face-against-edge contacts laid out for the wide path: the pairs whose kept
+// features are a face against an edge (PolygonCollider::keepPolygonFeatures) sit in
+// structure-of-arrays slots and are measured several per instruction (polygon_face_kernel.hpp),
+// to the bits of PolygonCollider::measurePolygons. Outside a periodic cell a pair keeps its slot
+// from step to step (polygon_pair_slots.hpp); in a cell the slots are filled each step. Every pair has a
 // contact here, by its index in the list: the batch's measurement, or whatever the caller
 // wrote (the scalar narrow phase's answer for the other pairs). A range of pairs
 // [begin, end) uses the slots from begin on, so threads on disjoint ranges share nothing.
